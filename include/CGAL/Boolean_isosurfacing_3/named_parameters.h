@@ -1,0 +1,62 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_NAMED_PARAMETERS_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_NAMED_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+// The package's own named parameters.  CGAL 5.5 has no hook to add members
+// to `CGAL::Named_function_parameters`, so ours are free functions in
+// `CGAL::Boolean_isosurfacing::parameters` that start a chain; CGAL's own
+// parameters are then chained after them:
+//
+//   namespace BI = CGAL::Boolean_isosurfacing;
+//   BI::surveyor_volume(mesh, BI::parameters::signed_volume(true).geom_traits(k));
+//
+// Each parameter also has a two-argument form that appends it to an existing
+// chain: `BI::parameters::signed_volume(true, CGAL::parameters::geom_traits(k))`.
+//
+// To add a parameter, add one line to the list below.
+#define CGAL_BOOLEAN_ISOSURFACING_NAMED_PARAMETERS(X) \
+  X(signed_volume_t, signed_volume)                   \
+  X(check_self_intersections_t, check_self_intersections)
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+namespace internal_np {
+
+#define CGAL_BI_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
+CGAL_BOOLEAN_ISOSURFACING_NAMED_PARAMETERS(CGAL_BI_DECLARE_TAG)
+#undef CGAL_BI_DECLARE_TAG
+
+} // namespace internal_np
+
+namespace parameters {
+
+using CGAL::parameters::choose_parameter;
+using CGAL::parameters::get_parameter;
+using CGAL::parameters::default_values;
+
+#define CGAL_BI_DECLARE_FUNCTION(TAG, NAME)                                          \
+  template <typename T>                                                              \
+  CGAL::Named_function_parameters<T, internal_np::TAG> NAME(const T& value)          \
+  {                                                                                  \
+    return CGAL::Named_function_parameters<T, internal_np::TAG>(value);              \
+  }                                                                                  \
+  template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>            \
+  CGAL::Named_function_parameters<T, internal_np::TAG,                               \
+                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>> \
+  NAME(const T& value, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& rest) \
+  {                                                                                  \
+    return CGAL::Named_function_parameters<                                          \
+        T, internal_np::TAG, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>>(value, rest); \
+  }
+CGAL_BOOLEAN_ISOSURFACING_NAMED_PARAMETERS(CGAL_BI_DECLARE_FUNCTION)
+#undef CGAL_BI_DECLARE_FUNCTION
+
+} // namespace parameters
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_NAMED_PARAMETERS_H

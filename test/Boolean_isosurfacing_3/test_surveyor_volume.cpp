@@ -1,0 +1,450 @@
+// Tests of surveyor_volume(): analytic values, invariances, accuracy against
+// the exact (Epeck) volume on generated and real meshes, and every bad input.
+
+#include <CGAL/Boolean_isosurfacing_3/generators.h>
+#include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
+
+#include <CGAL/Aff_transformation_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/transform.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace BI = CGAL::Boolean_isosurfacing;
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef Epick::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
+typedef std::array<std::size_t, 3> Triangle;
+
+// The oracle: PMP::volume with Epeck (it calls exact() after every term, so
+// the value is the exact rational volume of the double coordinates), rounded
+// to the nearest double once at the end.
+double exact_volume(const Mesh& mesh)
+{
+  Exact_mesh exact_mesh;
+  CGAL::copy_face_graph(mesh, exact_mesh);
+  const Epeck::FT v = PMP::volume(exact_mesh);
+  return CGAL::to_double(CGAL::exact(v));
+}
+
+double relative_error(double value, double reference)
+{
+  return std::abs(value - reference) / std::abs(reference);
+}
+
+Mesh make_triangulated_box(const Point& low, const Point& high)
+{
+  Mesh mesh;
+  CGAL::make_hexahedron(Point(low.x(), low.y(), low.z()), Point(high.x(), low.y(), low.z()),
+                        Point(high.x(), high.y(), low.z()), Point(low.x(), high.y(), low.z()),
+                        Point(low.x(), high.y(), high.z()), Point(low.x(), low.y(), high.z()),
+                        Point(high.x(), low.y(), high.z()), Point(high.x(), high.y(), high.z()), mesh);
+  PMP::triangulate_faces(mesh);
+  return mesh;
+}
+
+Mesh make_sphere(const Point& center, double radius, unsigned subdivisions)
+{
+  Mesh mesh;
+  BI::make_icosphere(mesh, center, radius, subdivisions);
+  return mesh;
+}
+
+Mesh make_torus(const Point& center, double major, double minor, std::size_t nu, std::size_t nv)
+{
+  Mesh mesh;
+  BI::make_torus(mesh, center, major, minor, nu, nv);
+  return mesh;
+}
+
+Mesh translated(const Mesh& mesh, const Epick::Vector_3& t)
+{
+  Mesh copy = mesh;
+  PMP::transform(Epick::Aff_transformation_3(CGAL::TRANSLATION, t), copy);
+  return copy;
+}
+
+// The seed's algorithm, literally: unsigned tetrahedron volumes against the
+// centroid, added or subtracted by the sign of n . (tc - c).
+double seed_literal_volume(const Mesh& mesh)
+{
+  Epick::Vector_3 sum(0, 0, 0);
+  for(auto v : vertices(mesh)) sum = sum + (mesh.point(v) - CGAL::ORIGIN);
+  const Point c = CGAL::ORIGIN + sum / double(mesh.number_of_vertices());
+  double volume = 0;
+  for(auto f : faces(mesh))
+  {
+    auto h = halfedge(f, mesh);
+    const Point& t1 = mesh.point(target(h, mesh));
+    const Point& t2 = mesh.point(target(next(h, mesh), mesh));
+    const Point& t3 = mesh.point(target(next(next(h, mesh), mesh), mesh));
+    const Epick::Vector_3 tn = CGAL::cross_product(t2 - t1, t3 - t1);
+    const Point tc = CGAL::centroid(t1, t2, t3);
+    const double d = tn * (tc - c);
+    const double unsigned_volume = std::abs(CGAL::volume(t1, t2, t3, c));
+    if(d < 0) volume -= unsigned_volume;
+    if(d > 0) volume += unsigned_volume;
+  }
+  return volume;
+}
+
+// ---------------------------------------------------------------- analytic
+
+TEST(SurveyorVolume, AnalyticTetrahedronCubeOctahedron)
+{
+  Mesh tetrahedron;
+  CGAL::make_tetrahedron(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), tetrahedron);
+  EXPECT_NEAR(BI::surveyor_volume(tetrahedron), 1.0 / 6.0, 1e-16);
+
+  const Mesh cube = make_triangulated_box(Point(-1, -1, -1), Point(1, 1, 1));
+  EXPECT_NEAR(BI::surveyor_volume(cube), 8.0, 1e-15);
+
+  // Octahedron with vertices at +-1 on the axes: volume 4/3.
+  const std::vector<Point> points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const std::vector<Triangle> triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                           {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  EXPECT_NEAR(BI::surveyor_volume(points, triangles), 4.0 / 3.0, 1e-15);
+  Mesh octahedron;
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, octahedron);
+  EXPECT_NEAR(BI::surveyor_volume(octahedron), 4.0 / 3.0, 1e-15);
+}
+
+TEST(SurveyorVolume, ExactKernelGivesExactRationalVolume)
+{
+  Exact_mesh tetrahedron;
+  CGAL::make_tetrahedron(Epeck::Point_3(0, 0, 0), Epeck::Point_3(1, 0, 0), Epeck::Point_3(0, 1, 0),
+                         Epeck::Point_3(0, 0, 1), tetrahedron);
+  EXPECT_TRUE(BI::surveyor_volume(tetrahedron) == Epeck::FT(1) / Epeck::FT(6));
+}
+
+TEST(SurveyorVolume, GeneratedShapesAreClosedOutwardAndNearTheirSmoothVolume)
+{
+  const double pi = 3.14159265358979323846;
+  const Mesh sphere = make_sphere(Point(0, 0, 0), 1.0, 5);
+  EXPECT_TRUE(CGAL::is_closed(sphere));
+  EXPECT_EQ(sphere.number_of_faces(), 20480u);
+  // An inscribed polyhedron: a little smaller than the ball.
+  const double ball = 4.0 / 3.0 * pi;
+  EXPECT_LT(BI::surveyor_volume(sphere), ball);
+  EXPECT_GT(BI::surveyor_volume(sphere), ball * (1 - 2e-3));
+
+  const Mesh torus = make_torus(Point(0, 0, 0), 1.0, 0.5, 256, 128);
+  EXPECT_TRUE(CGAL::is_closed(torus));
+  const double smooth_torus = 2 * pi * pi * 1.0 * 0.25;
+  EXPECT_LT(BI::surveyor_volume(torus), smooth_torus);
+  EXPECT_GT(BI::surveyor_volume(torus), smooth_torus * (1 - 1e-3));
+}
+
+TEST(SurveyorVolume, SignTestEqualsTheSeedsLiteralAlgorithm)
+{
+  for(const Mesh& mesh : {make_torus(Point(0.3, -2, 5), 2.0, 0.7, 40, 17), make_sphere(Point(1, 2, 3), 2.0, 3)})
+  {
+    const double ours = BI::surveyor_volume(mesh);
+    EXPECT_LT(relative_error(ours, seed_literal_volume(mesh)), 1e-13);
+    EXPECT_LT(relative_error(ours, exact_volume(mesh)), 1e-14);
+  }
+}
+
+// ------------------------------------------------------------- invariances
+
+TEST(SurveyorVolume, ReversingTheOrientationFlipsTheSign)
+{
+  const Mesh torus = make_torus(Point(0, 0, 0), 1.0, 0.4, 60, 30);
+  Mesh reversed = torus;
+  PMP::reverse_face_orientations(reversed);
+  const double v = BI::surveyor_volume(torus);
+  const double r = BI::surveyor_volume(reversed, BI::parameters::signed_volume(true));
+  EXPECT_LT(r, 0);
+  EXPECT_LT(relative_error(-r, v), 1e-14);
+  // Without the opt-in, an inward surface is an error, not a negative number.
+  EXPECT_THROW(BI::surveyor_volume(reversed), BI::Inward_oriented_mesh_error);
+}
+
+TEST(SurveyorVolume, InvariantUnderTranslationAndRotation)
+{
+  const Mesh mesh = make_torus(Point(0, 0, 0), 1.0, 0.3, 80, 40);
+  const double v = BI::surveyor_volume(mesh);
+  // Translation by integers keeps small integer-free coordinates exact only
+  // up to rounding; compare with the exact volume of the moved mesh, and
+  // with the unmoved value up to the rounding of the input coordinates.
+  for(const Epick::Vector_3 t : {Epick::Vector_3(3, -7, 11), Epick::Vector_3(1e3, 2e3, -4e3)})
+  {
+    const Mesh moved = translated(mesh, t);
+    const double w = BI::surveyor_volume(moved);
+    EXPECT_LT(relative_error(w, exact_volume(moved)), 1e-12);
+    EXPECT_LT(relative_error(w, v), 1e-10);
+  }
+  // Rotations about several axes (rounded coordinates: same tolerances).
+  for(int k = 1; k <= 5; ++k)
+  {
+    const double a = 0.37 * k, c = std::cos(a), s = std::sin(a);
+    const Epick::Aff_transformation_3 rotation(c, -s, 0, s * c, c * c, -s, s * s, c * s, c);
+    Mesh rotated = mesh;
+    PMP::transform(rotation, rotated);
+    const double w = BI::surveyor_volume(rotated);
+    EXPECT_LT(relative_error(w, exact_volume(rotated)), 1e-12);
+    EXPECT_LT(relative_error(w, v), 1e-12);
+  }
+}
+
+// The headline accuracy claim: far from the origin, the centroid reference
+// point keeps every digit while PMP::volume (tetrahedra against the origin)
+// loses them.  The exact value is the Epeck volume of the same doubles.
+TEST(SurveyorVolume, FarFromTheOriginKeepsItsDigitsWherePmpVolumeLosesThem)
+{
+  struct Case { const char* name; Mesh mesh; };
+  const Case cases[] = {
+      {"unit cube moved to 1e6", make_triangulated_box(Point(1e6, 1e6, 1e6), Point(1e6 + 1, 1e6 + 1, 1e6 + 1))},
+      {"unit sphere moved to 1e7", make_sphere(Point(1e7, 1e7, 1e7), 1.0, 4)},
+      {"torus moved to (-3e5, 2e5, 7e5)", make_torus(Point(-3e5, 2e5, 7e5), 1.0, 0.5, 64, 32)},
+      {"unit sphere at the origin", make_sphere(Point(0, 0, 0), 1.0, 4)}};
+  std::printf("%-34s %-24s %-10s %-10s\n", "mesh", "exact volume", "ours", "PMP::volume");
+  for(const Case& c : cases)
+  {
+    const double exact = exact_volume(c.mesh);
+    const double ours = relative_error(BI::surveyor_volume(c.mesh), exact);
+    const double pmp = relative_error(PMP::volume(c.mesh), exact);
+    std::printf("%-34s %-24.17g %-10.2e %-10.2e\n", c.name, exact, ours, pmp);
+    EXPECT_LT(ours, 1e-12) << c.name;
+    EXPECT_LE(ours, pmp + 1e-15) << c.name;
+  }
+}
+
+// A sum that cancels completely: a sphere far from the origin and its
+// reversed copy in one mesh enclose exactly zero.  The double sum cannot
+// certify any relative accuracy there, so the exact fallback must run and
+// return exactly 0 -- not a rounding residue.
+TEST(SurveyorVolume, CancellingSumFallsBackToExactArithmetic)
+{
+  Mesh both = make_sphere(Point(1e5 + 0.1, -2e5, 3.3e5), 1.0, 3);
+  Mesh reversed = both;
+  PMP::reverse_face_orientations(reversed);
+  CGAL::copy_face_graph(reversed, both);
+  EXPECT_EQ(BI::surveyor_volume(both, BI::parameters::signed_volume(true)), 0.0);
+  EXPECT_EQ(exact_volume(both), 0.0);
+
+  // Nearly cancelling: a big sphere minus a slightly smaller reversed one
+  // (a thin shell).  Compare with the exact value.
+  Mesh shell = make_sphere(Point(7e3, 0, 0), 1.0, 4);
+  Mesh inner = make_sphere(Point(7e3, 0, 0), 1.0 - 1e-9, 4);
+  PMP::reverse_face_orientations(inner);
+  CGAL::copy_face_graph(inner, shell);
+  const double exact = exact_volume(shell);
+  EXPECT_GT(exact, 0);
+  EXPECT_LT(relative_error(BI::surveyor_volume(shell), exact), 1e-14);
+}
+
+// ----------------------------------------------------------- other models
+
+TEST(SurveyorVolume, WorksOnPolyhedron3AndWithAVertexPointMap)
+{
+  CGAL::Polyhedron_3<Epick> polyhedron;
+  CGAL::make_tetrahedron(Point(0, 0, 0), Point(2, 0, 0), Point(0, 2, 0), Point(0, 0, 2), polyhedron);
+  EXPECT_NEAR(BI::surveyor_volume(polyhedron), 8.0 / 6.0, 1e-15);
+
+  // Scaled positions in a separate property map.
+  Mesh mesh;
+  CGAL::make_tetrahedron(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), mesh);
+  auto scaled = mesh.add_property_map<Mesh::Vertex_index, Point>("v:scaled").first;
+  for(auto v : vertices(mesh)) scaled[v] = Point(3 * mesh.point(v).x(), 3 * mesh.point(v).y(), 3 * mesh.point(v).z());
+  EXPECT_NEAR(BI::surveyor_volume(mesh, CGAL::parameters::vertex_point_map(scaled)), 27.0 / 6.0, 1e-14);
+  EXPECT_NEAR(BI::surveyor_volume(mesh, BI::parameters::signed_volume(false).vertex_point_map(scaled)),
+              27.0 / 6.0, 1e-14);
+}
+
+// An archetype of SurveyorVolumeTraits_3: exactly the documented members, so
+// the function may not use anything else from the kernel.
+struct Surveyor_volume_traits_archetype
+{
+  typedef double FT;
+  typedef Epick::Point_3 Point_3;
+  struct Compute_x_3 { FT operator()(const Point_3& p) const { return p.x(); } };
+  struct Compute_y_3 { FT operator()(const Point_3& p) const { return p.y(); } };
+  struct Compute_z_3 { FT operator()(const Point_3& p) const { return p.z(); } };
+  struct Construct_point_3
+  {
+    Point_3 operator()(const FT& x, const FT& y, const FT& z) const { return Point_3(x, y, z); }
+  };
+  struct Compute_volume_3
+  {
+    FT operator()(const Point_3& p, const Point_3& q, const Point_3& r, const Point_3& s) const
+    {
+      return CGAL::volume(p, q, r, s);
+    }
+  };
+  Compute_x_3 compute_x_3_object() const { return {}; }
+  Compute_y_3 compute_y_3_object() const { return {}; }
+  Compute_z_3 compute_z_3_object() const { return {}; }
+  Construct_point_3 construct_point_3_object() const { return {}; }
+  Compute_volume_3 compute_volume_3_object() const { return {}; }
+};
+
+TEST(SurveyorVolume, ConceptArchetypeIsEnough)
+{
+  const Mesh torus = make_torus(Point(0, 0, 0), 1.0, 0.5, 30, 20);
+  const double with_archetype =
+      BI::surveyor_volume(torus, CGAL::parameters::geom_traits(Surveyor_volume_traits_archetype()));
+  EXPECT_EQ(with_archetype, BI::surveyor_volume(torus));
+}
+
+// --------------------------------------------------------------- bad input
+
+template <typename Error, typename F>
+void expect_error(F f, const std::string& message_part)
+{
+  try
+  {
+    f();
+    ADD_FAILURE() << "no exception; expected one mentioning '" << message_part << "'";
+  }
+  catch(const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(message_part), std::string::npos) << e.what();
+  }
+}
+
+TEST(SurveyorVolumeErrors, EmptyMesh)
+{
+  Mesh empty;
+  expect_error<BI::Empty_input_error>([&] { BI::surveyor_volume(empty); }, "no face");
+  const std::vector<Point> points;
+  const std::vector<Triangle> triangles;
+  expect_error<BI::Empty_input_error>([&] { BI::surveyor_volume(points, triangles); }, "no face");
+}
+
+TEST(SurveyorVolumeErrors, NonTriangleFace)
+{
+  Mesh cube;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(0, 1, 1),
+                        Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), cube);
+  expect_error<BI::Non_triangle_face_error>([&] { BI::surveyor_volume(cube); }, "not a triangle");
+  const std::vector<Point> points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<std::vector<int>> quad = {{0, 1, 2, 3}};
+  expect_error<BI::Non_triangle_face_error>([&] { BI::surveyor_volume(points, quad); }, "has 4 vertices");
+}
+
+TEST(SurveyorVolumeErrors, OpenMesh)
+{
+  Mesh mesh = make_sphere(Point(0, 0, 0), 1.0, 2);
+  CGAL::Euler::remove_face(halfedge(*faces(mesh).begin(), mesh), mesh);
+  expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(mesh); }, "not closed");
+  // Any error of the family is an Invalid_input_error.
+  EXPECT_THROW(BI::surveyor_volume(mesh), BI::Invalid_input_error);
+
+  // Soups: a missing face, and a face with the wrong orientation.
+  std::vector<Point> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::vector<Triangle> open = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}};
+  expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(points, open); }, "not closed");
+  std::vector<Triangle> flipped = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 3, 2}};
+  expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(points, flipped); }, "inconsistently oriented");
+}
+
+TEST(SurveyorVolumeErrors, NanAndInfiniteCoordinates)
+{
+  for(const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+  {
+    Mesh mesh = make_sphere(Point(0, 0, 0), 1.0, 1);
+    mesh.point(*std::next(vertices(mesh).begin(), 5)) = Point(0.5, bad, 0.5);
+    expect_error<BI::Non_finite_value_error>([&] { BI::surveyor_volume(mesh); }, "point #5");
+  }
+}
+
+TEST(SurveyorVolumeErrors, BadSoupIndices)
+{
+  const std::vector<Point> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<std::array<int, 3>> out_of_range = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 4}};
+  expect_error<BI::Invalid_input_error>([&] { BI::surveyor_volume(points, out_of_range); }, "refers to point 4");
+  const std::vector<std::array<int, 3>> negative = {{0, 2, -1}};
+  expect_error<BI::Invalid_input_error>([&] { BI::surveyor_volume(points, negative); }, "refers to point -1");
+  const std::vector<std::array<int, 3>> degenerate = {{0, 2, 2}};
+  expect_error<BI::Invalid_input_error>([&] { BI::surveyor_volume(points, degenerate); }, "repeats a vertex");
+}
+
+TEST(SurveyorVolumeErrors, SelfIntersectingSurfaceOnlyWhenAskedToCheck)
+{
+  // Two overlapping cubes in one mesh: closed and outward, but the surface
+  // crosses itself.  Its winding number is 2 in the overlap, so the signed
+  // volume counts the overlap twice: 8 + 8.
+  Mesh two = make_triangulated_box(Point(0, 0, 0), Point(2, 2, 2));
+  const Mesh other = make_triangulated_box(Point(1, 1, 1), Point(3, 3, 3));
+  CGAL::copy_face_graph(other, two);
+  EXPECT_NEAR(BI::surveyor_volume(two), 16.0, 1e-14);
+  EXPECT_NEAR(BI::surveyor_volume(two, BI::parameters::check_self_intersections(true, BI::parameters::signed_volume(true))), 16.0,
+              1e-14);
+  expect_error<BI::Self_intersecting_mesh_error>(
+      [&] { BI::surveyor_volume(two, BI::parameters::check_self_intersections(true)); }, "intersects itself");
+  // A simple mesh passes the check.
+  EXPECT_NEAR(BI::surveyor_volume(make_triangulated_box(Point(0, 0, 0), Point(2, 2, 2)),
+                                  BI::parameters::check_self_intersections(true)),
+              8.0, 1e-14);
+}
+
+// ------------------------------------------------------- shared real meshes
+
+std::string shared_data(const std::string& relative) { return std::string(BISO_SHARED_DATA_DIR) + "/" + relative; }
+
+class SharedMesh : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SharedMesh, AgreesWithExactVolumeAndPmpVolume)
+{
+  const std::string path = shared_data(GetParam());
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  ASSERT_TRUE(CGAL::IO::read_polygon_soup(path, points, polygons)) << "cannot read " << path;
+  ASSERT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(polygons)) << path;
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+
+  const double exact = exact_volume(mesh);
+  const double ours = BI::surveyor_volume(mesh, BI::parameters::signed_volume(true));
+  const double ours_soup = BI::surveyor_volume(points, polygons, BI::parameters::signed_volume(true));
+  const double pmp = PMP::volume(mesh);
+  std::printf("%-45s faces %7zu  exact %.17g  rel.err ours %.2e  PMP::volume(Epick) %.2e\n", GetParam(),
+              std::size_t(mesh.number_of_faces()), exact, relative_error(ours, exact), relative_error(pmp, exact));
+  EXPECT_LT(relative_error(ours, exact), 1e-12);
+  EXPECT_LT(relative_error(ours_soup, exact), 1e-12);
+  // PMP::volume(Epick) agrees to the accuracy its origin-based sum allows.
+  EXPECT_LT(relative_error(pmp, exact), 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Meshes, SharedMesh,
+    ::testing::Values("meshes/3holes.off", "meshes/armadillo.obj", "meshes/bumpy-cube.obj", "meshes/bunny.off",
+                      "meshes/bunny_hoppe.off", "meshes/cube.obj", "meshes/elephant.obj", "meshes/elephant_cgal.off",
+                      "meshes/fandisk.off", "meshes/fertility.off", "meshes/ico4_sphere.obj",
+                      "meshes/mechpart_hoppe.off", "meshes/quadknot_tri.off", "meshes/rocker-arm.obj",
+                      "meshes/torus.off", "meshes/tray_bottom.off", "meshes/xyz-cube-20mm.off",
+                      "boolean_pairs/ballA.off", "boolean_pairs/ballB.off", "boolean_pairs/hull-body.obj",
+                      "boolean_pairs/hull-mask.obj", "boolean_pairs/Generic_Twin_7081.1.t0_left.obj",
+                      "boolean_pairs/Generic_Twin_7081.1.t0_right.obj"),
+    [](const ::testing::TestParamInfo<const char*>& info) {
+      std::string name = info.param;
+      for(char& ch : name)
+        if(!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
+
+} // namespace

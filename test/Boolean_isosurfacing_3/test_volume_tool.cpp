@@ -1,0 +1,185 @@
+// Runs the `volume` command-line tool on good and bad files it writes itself
+// and checks the exit status and what it prints.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+struct Result
+{
+  int status;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class VolumeTool : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    char pattern[] = "/tmp/biso_volume_tool_XXXXXX";
+    ASSERT_NE(mkdtemp(pattern), nullptr);
+    m_dir = pattern;
+  }
+  void TearDown() override { std::system(("rm -rf '" + m_dir + "'").c_str()); }
+
+  std::string write(const std::string& name, const std::string& content)
+  {
+    const std::string path = m_dir + "/" + name;
+    std::ofstream(path) << content;
+    return path;
+  }
+
+  Result run(const std::string& arguments)
+  {
+    const std::string out = m_dir + "/stdout.txt", err = m_dir + "/stderr.txt";
+    const std::string command = std::string(BISO_VOLUME_TOOL) + " " + arguments + " >" + out + " 2>" + err;
+    const int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  }
+
+  std::string m_dir;
+};
+
+const char* tetrahedron_off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+int count_lines(const std::string& s)
+{
+  int n = 0;
+  for(char c : s) n += (c == '\n');
+  return n;
+}
+
+TEST_F(VolumeTool, PrintsTheVolumeOfAGoodFile)
+{
+  const Result r = run(write("tet.off", tetrahedron_off));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("volume 0.16666666666666"), std::string::npos) << r.out;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+TEST_F(VolumeTool, CheckPrintsPmpAndExactValues)
+{
+  const Result r = run("--check " + write("tet.off", tetrahedron_off));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("PMP::volume (Epick)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("exact (Epeck)        0.16666666666666"), std::string::npos) << r.out;
+}
+
+TEST_F(VolumeTool, ReadsObjPlyAndStl)
+{
+  const std::string obj = write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const std::string ply = write("tet.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+                                "property double z\nelement face 4\nproperty list uchar int vertex_indices\n"
+                                "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string stl = write("tet.stl",
+                                "solid t\n"
+                                "facet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\nendloop\nendfacet\n"
+                                "facet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 0 1\nendloop\nendfacet\n"
+                                "facet normal -1 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 1\nvertex 0 1 0\nendloop\nendfacet\n"
+                                "facet normal 1 1 1\nouter loop\nvertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\nendloop\nendfacet\n"
+                                "endsolid t\n");
+  for(const std::string& path : {obj, ply, stl})
+  {
+    const Result r = run(path);
+    EXPECT_EQ(r.status, 0) << path << ": " << r.err;
+    EXPECT_NE(r.out.find("volume 0.16666666666666"), std::string::npos) << path << ": " << r.out;
+  }
+}
+
+// Every bad input: a non-zero exit, exactly one line on stderr naming the
+// file and the problem, nothing on stdout.
+struct Bad_case { const char* name; const char* content; const char* expected; };
+
+TEST_F(VolumeTool, BadInputGetsOneClearLineAndNonZeroExit)
+{
+  const Bad_case cases[] = {
+      {"open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n", "not closed"},
+      {"garbage.off", "OFF\n4 4 0\n0 0 zero\n", "cannot parse"},
+      {"quad.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                   "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n", "has 4 vertices"},
+      {"empty.off", "OFF\n0 0 0\n", "no face"},
+      {"inward.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n", "oriented inward"},
+      {"not_a_mesh.txt", "hello\n", "cannot parse"},
+  };
+  for(const Bad_case& c : cases)
+  {
+    const std::string path = write(c.name, c.content);
+    const Result r = run(path);
+    EXPECT_NE(r.status, 0) << c.name;
+    EXPECT_EQ(count_lines(r.err), 1) << c.name << ": " << r.err;
+    EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.name << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.name << ": " << r.out;
+  }
+  const Result missing = run(m_dir + "/does_not_exist.off");
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.err.find("cannot open"), std::string::npos) << missing.err;
+  EXPECT_EQ(count_lines(missing.err), 1) << missing.err;
+}
+
+TEST_F(VolumeTool, SignedOptionAcceptsAnInwardMesh)
+{
+  const Result r = run("--signed " + write("inward.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                                                        "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("volume -0.16666666666666"), std::string::npos) << r.out;
+}
+
+TEST_F(VolumeTool, SelfIntersectingMeshIsRefusedUnlessSigned)
+{
+  // Two interpenetrating tetrahedra in one file.
+  const std::string path = write("two.off", "OFF\n8 8 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n"
+                                            "0.3 0.3 0.3\n2.3 0.3 0.3\n0.3 2.3 0.3\n0.3 0.3 2.3\n"
+                                            "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+                                            "3 4 6 5\n3 4 5 7\n3 4 7 6\n3 5 6 7\n");
+  const Result refused = run(path);
+  EXPECT_NE(refused.status, 0);
+  EXPECT_NE(refused.err.find("intersects itself"), std::string::npos) << refused.err;
+  const Result accepted = run("--signed " + path);
+  EXPECT_EQ(accepted.status, 0) << accepted.err;
+  EXPECT_NE(accepted.out.find("volume 2.666666666666"), std::string::npos) << accepted.out;
+}
+
+TEST_F(VolumeTool, ManyFilesOneBadStillReportsTheGoodOnes)
+{
+  const Result r = run(write("a.off", tetrahedron_off) + " " + m_dir + "/missing.off");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("volume 0.1666"), std::string::npos) << r.out;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+}
+
+TEST_F(VolumeTool, UsageErrors)
+{
+  EXPECT_EQ(run("").status, 2);
+  EXPECT_EQ(run("--frobnicate x.off").status, 2);
+}
+
+TEST_F(VolumeTool, DemoWritesMeshesAndPrintsAccurateVolumes)
+{
+  const Result r = run("--demo " + m_dir + "/demo");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for(const char* file : {"sphere.off", "sphere_at_1e7.off", "cube_at_1e6.off", "torus.off"})
+    EXPECT_TRUE(std::ifstream(m_dir + "/demo/" + file).good()) << file;
+  EXPECT_NE(r.out.find("exact (Epeck)        1 "), std::string::npos) << r.out; // the unit cube, exactly 1
+}
+
+} // namespace
