@@ -46,18 +46,33 @@ public:
   template <typename FT>
   void add(const FT& x, const FT& y, const FT& z)
   {
-    const double dx = CGAL::to_double(x), dy = CGAL::to_double(y), dz = CGAL::to_double(z);
-    if(!(std::isfinite(dx) && std::isfinite(dy) && std::isfinite(dz)))
-    {
-      std::ostringstream out;
-      out << "point #" << m_count << " has a non-finite coordinate (" << dx << ' ' << dy << ' '
-          << dz << ")";
-      throw Non_finite_value_error(out.str());
-    }
-    m_x += dx;
-    m_y += dy;
-    m_z += dz;
+    m_x += CGAL::to_double(x);
+    m_y += CGAL::to_double(y);
+    m_z += CGAL::to_double(z);
     ++m_count;
+  }
+
+  // A NaN or infinite coordinate makes its sum NaN or infinite, so one test
+  // at the end replaces a test per point; `find_culprit` then names the point
+  // (and is only called on that error path).
+  template <typename PointRange, typename Coordinates>
+  void check_finite(const PointRange& points, const Coordinates& coordinates_of) const
+  {
+    if(std::isfinite(m_x) && std::isfinite(m_y) && std::isfinite(m_z))
+      return;
+    std::size_t index = 0;
+    for(const auto& p : points)
+    {
+      const std::array<double, 3> c = coordinates_of(p);
+      if(!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])))
+      {
+        std::ostringstream out;
+        out << "point #" << index << " has a non-finite coordinate (" << c[0] << ' ' << c[1] << ' ' << c[2] << ")";
+        throw Non_finite_value_error(out.str());
+      }
+      ++index;
+    }
+    throw Non_finite_value_error("the coordinates are too large: their sum overflows");
   }
 
   std::size_t count() const { return m_count; }
@@ -113,33 +128,50 @@ void check_orientation_of_result(const FT& volume, bool signed_result)
 // edge's contribution cancels against its opposite), so it is what the
 // result's meaning needs -- no more (non-manifold vertices are fine).
 template <typename TriangleIndices>
-void check_soup_is_closed(const std::vector<TriangleIndices>& triangles)
+void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::size_t number_of_points)
 {
-  std::vector<std::uint64_t> directed;
-  directed.reserve(3 * triangles.size());
+  // Bucket the 3n directed edges by their smaller endpoint (a counting
+  // sort, linear), store (larger endpoint, direction) and sort each small
+  // bucket: then (a, b) and (b, a) are neighbours.  O(n) for bounded vertex
+  // degrees, instead of a global sort.
+  std::vector<std::uint32_t> first(number_of_points + 1, 0);
   for(const TriangleIndices& t : triangles)
     for(int i = 0; i < 3; ++i)
-      directed.push_back((std::uint64_t(t[i]) << 32) | std::uint64_t(t[(i + 1) % 3]));
-  std::sort(directed.begin(), directed.end());
-
-  for(auto run = directed.begin(); run != directed.end();)
-  {
-    const std::uint64_t key = *run;
-    const auto run_end = std::upper_bound(run, directed.end(), key);
-    const std::uint64_t a = key >> 32, b = key & 0xffffffffu;
-    const std::uint64_t opposite = (b << 32) | a;
-    const auto opposite_range = std::equal_range(directed.begin(), directed.end(), opposite);
-    const auto here = std::distance(run, run_end);
-    const auto there = std::distance(opposite_range.first, opposite_range.second);
-    if(here != there)
+      ++first[std::min(t[i], t[(i + 1) % 3]) + 1];
+  for(std::size_t v = 0; v < number_of_points; ++v)
+    first[v + 1] += first[v];
+  std::vector<std::uint64_t> entries(first.back());
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  for(const TriangleIndices& t : triangles)
+    for(int i = 0; i < 3; ++i)
     {
-      std::ostringstream out;
-      out << "the polygon soup is not closed: edge (" << a << ", " << b << ") is used " << here
-          << " time(s) but its opposite (" << b << ", " << a << ") " << there
-          << " time(s) (a border edge, or inconsistently oriented faces)";
-      throw Open_mesh_error(out.str());
+      const std::uint32_t a = t[i], b = t[(i + 1) % 3];
+      const std::uint32_t low = std::min(a, b), high = std::max(a, b);
+      entries[fill[low]++] = (std::uint64_t(high) << 1) | std::uint64_t(a > b);
     }
-    run = run_end;
+
+  for(std::size_t low = 0; low < number_of_points; ++low)
+  {
+    const auto begin = entries.begin() + first[low], end = entries.begin() + first[low + 1];
+    std::sort(begin, end);
+    for(auto run = begin; run != end;)
+    {
+      const std::uint64_t high = *run >> 1;
+      std::ptrdiff_t balance = 0; // (low, high) edges minus (high, low) edges
+      auto it = run;
+      for(; it != end && (*it >> 1) == high; ++it)
+        balance += (*it & 1) ? -1 : 1;
+      if(balance != 0)
+      {
+        std::ostringstream out;
+        out << "the polygon soup is not closed: edge (" << low << ", " << high << ") is used "
+            << std::count(run, it, (high << 1)) << " time(s) but its opposite (" << high << ", " << low << ") "
+            << std::count(run, it, (high << 1) | 1)
+            << " time(s) (a border edge, or inconsistently oriented faces)";
+        throw Open_mesh_error(out.str());
+      }
+      run = it;
+    }
   }
 }
 
@@ -230,6 +262,10 @@ surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters:
     const Point_3& p = get(vpm, v);
     reference.add(x(p), y(p), z(p));
   }
+  reference.check_finite(vertices(tmesh), [&](const auto v) {
+    const Point_3& p = get(vpm, v);
+    return std::array<double, 3>{CGAL::to_double(x(p)), CGAL::to_double(y(p)), CGAL::to_double(z(p))};
+  });
   const auto c = reference.centroid(gt);
 
   // Validation is fused into the traversal: the opposite halfedge is next to
@@ -363,7 +399,7 @@ auto surveyor_volume(const PointRange& points,
     flat.push_back(t);
     ++face_number;
   }
-  internal::check_soup_is_closed(flat);
+  internal::check_soup_is_closed(flat, n);
 
   const auto x = gt.compute_x_3_object();
   const auto y = gt.compute_y_3_object();
@@ -375,6 +411,10 @@ auto surveyor_volume(const PointRange& points,
     const Point_3& p = get(point_map, *it);
     reference.add(x(p), y(p), z(p));
   }
+  reference.check_finite(points, [&](const auto& value) {
+    const Point_3& p = get(point_map, value);
+    return std::array<double, 3>{CGAL::to_double(x(p)), CGAL::to_double(y(p)), CGAL::to_double(z(p))};
+  });
   const auto c = reference.centroid(gt);
   const auto for_each_triangle = [&](const auto& f) {
     for(const Triangle& t : flat)
