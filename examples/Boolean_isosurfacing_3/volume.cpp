@@ -10,15 +10,14 @@
 // A file that cannot be read or does not bound a solid gets one line on
 // stderr; the exit status is then 1 (2 for a usage error).
 
+#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
@@ -29,7 +28,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <stdexcept>
@@ -63,39 +61,6 @@ int usage(const char* message)
   return 2;
 }
 
-bool file_is_readable(const std::string& path)
-{
-  struct stat info;
-  if(stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return false;
-  std::ifstream in(path);
-  return bool(in);
-}
-
-// Reads a file as a closed triangle mesh; throws BI::Invalid_input_error with
-// a one-line message naming the problem.
-Mesh read_closed_mesh(const std::string& path)
-{
-  if(!file_is_readable(path)) throw BI::Invalid_input_error("cannot open the file");
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
-    throw BI::Invalid_input_error("cannot parse it as OFF, OBJ, PLY or STL (malformed or unsupported)");
-  if(polygons.empty()) throw BI::Empty_input_error("it has no face");
-  for(std::size_t i = 0; i < polygons.size(); ++i)
-    if(polygons[i].size() != 3)
-      throw BI::Non_triangle_face_error("face #" + std::to_string(i) + " has " + std::to_string(polygons[i].size()) +
-                                        " vertices; triangulate the mesh first");
-  // The soup overload validates closedness, orientation consistency and
-  // finiteness; its messages name the offending edge or point.
-  BI::surveyor_volume(points, polygons, BI::parameters::signed_volume(true));
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    throw BI::Invalid_input_error("it is closed but has a non-manifold vertex; "
-                                  "split it (PMP::duplicate_non_manifold_vertices) first");
-  Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  return mesh;
-}
-
 double exact_volume(const Mesh& mesh)
 {
   CGAL::Surface_mesh<Epeck::Point_3> exact_mesh;
@@ -112,7 +77,8 @@ bool report(const std::string& path, const Options& options)
 {
   try
   {
-    const Mesh mesh = read_closed_mesh(path);
+    Mesh mesh;
+    BI::IO::read_closed_triangle_mesh(path, mesh, options.signed_volume);
     const auto start = std::chrono::steady_clock::now();
     const double volume = BI::surveyor_volume(mesh, BI::parameters::signed_volume(options.signed_volume));
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
