@@ -2,7 +2,8 @@
 # Installs, from Debian's packages, whatever the build needs and is missing.
 set -euo pipefail
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
-          libgtest-dev libbenchmark-dev libtbb-dev)
+          libgtest-dev libbenchmark-dev libtbb-dev
+          libopenvdb-dev libboost-iostreams-dev)  # OpenVDB: only a rival measured in a benchmark
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

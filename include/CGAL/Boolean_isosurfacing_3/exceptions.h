@@ -74,6 +74,15 @@ public:
     : Invalid_input_error(message) {}
 };
 
+/// A lattice (or another discretisation) would have more points than the
+/// documented limit, or would need more memory than the caller allows.
+class Lattice_too_large_error : public Invalid_input_error
+{
+public:
+  explicit Lattice_too_large_error(const std::string& message)
+    : Invalid_input_error(message) {}
+};
+
 /// A textual input (a Boolean expression, a line of a point file, ...)
 /// could not be parsed.  `position()` is the 0-based character offset (or
 /// the 1-based line number, as the message states) of the first problem.

@@ -20,7 +20,9 @@
 // To add a parameter, add one line to the list below.
 #define CGAL_BOOLEAN_ISOSURFACING_NAMED_PARAMETERS(X) \
   X(signed_volume_t, signed_volume)                   \
-  X(check_self_intersections_t, check_self_intersections)
+  X(check_self_intersections_t, check_self_intersections) \
+  X(progress_t, progress)                             \
+  X(max_memory_bytes_t, max_memory_bytes)
 
 namespace CGAL {
 namespace Boolean_isosurfacing {

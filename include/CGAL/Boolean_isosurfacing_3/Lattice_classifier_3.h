@@ -1,0 +1,654 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_LATTICE_CLASSIFIER_3_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_LATTICE_CLASSIFIER_3_H
+
+#include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
+#include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Mesh_triangles_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/assertions.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// A crossing of an input mesh with a lattice line: it lies on the lattice
+/// edge from point `index - 1` to point `index` of its line (indices along
+/// the line's axis).  `position` is the coordinate along the axis, computed
+/// in double and clamped to the edge; it is *not* used for any
+/// combinatorial decision (those are exact).
+struct Lattice_crossing
+{
+  double position;
+  std::uint32_t index;
+  std::uint32_t mesh;
+};
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ *
+ * Exact inside/outside classification of every point of a `Regular_lattice_3`
+ * with respect to up to 64 closed triangle meshes, and the crossings of the
+ * meshes with every lattice edge.
+ *
+ * All decisions are made for the *symbolically perturbed* lattice: every
+ * lattice point p is moved to p + (d1, d2, d3), d1 >> d2 >> d3 > 0
+ * infinitesimal.  No perturbed lattice point lies on a mesh and no perturbed
+ * lattice line meets a mesh edge or vertex, so every question has a yes/no
+ * answer, obtained from exact predicates on the unperturbed doubles plus the
+ * sign of the leading perturbation term.  Consequences:
+ *
+ * - a lattice point that is not on any mesh is classified as it is (the
+ *   parity of the number of crossings of a ray, like
+ *   `CGAL::Side_of_triangle_mesh`); a point on a mesh is classified as the
+ *   point moved by +d1 in x (then +d2 in y, +d3 in z);
+ * - for every lattice edge and every mesh, the number of crossings on the
+ *   edge has the parity of the change of classification between its ends,
+ *   *exactly* (`number_of_inconsistent_edges()` checks it).
+ *
+ * Algorithm: one pass per axis over the lattice lines parallel to it.  Each
+ * triangle is binned to the lines that pass through its projected bounding
+ * box; a line crosses it iff the perturbed line point is inside its
+ * projection (3 exact orient2d); the crossing's index along the line is a
+ * double estimate corrected by exact orient3d tests.  The x lines give the
+ * classification (toggle the mesh bit at each crossing index, then a prefix
+ * XOR along the line): O(points + crossings + triangles), no sorting of
+ * lattice points, no ray shooting.
+ *
+ * Memory: one mask of 1, 2, 4 or 8 bytes (up to 8, 16, 32, 64 meshes) per
+ * lattice point, plus 16 bytes per crossing and 8 bytes per lattice line.
+ */
+class Lattice_classifier_3
+{
+public:
+  typedef Lattice_crossing Crossing;
+
+  /// A contiguous read-only range of crossings.
+  class Crossing_range
+  {
+  public:
+    Crossing_range() = default;
+    Crossing_range(const Crossing* first, const Crossing* last) : m_first(first), m_last(last) {}
+    const Crossing* begin() const { return m_first; }
+    const Crossing* end() const { return m_last; }
+    std::size_t size() const { return std::size_t(m_last - m_first); }
+    bool empty() const { return m_first == m_last; }
+    const Crossing& operator[](std::size_t i) const { return m_first[i]; }
+
+  private:
+    const Crossing* m_first = nullptr;
+    const Crossing* m_last = nullptr;
+  };
+
+  static constexpr std::size_t max_number_of_meshes = 64;
+  /// Default of the named parameter `max_memory_bytes`: 8 GiB.
+  static constexpr std::size_t default_max_memory_bytes = std::size_t(8) << 30;
+
+  /*!
+   * classifies the points of `lattice` with respect to `meshes`.
+   *
+   * \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+   *         (needs TBB); the result is identical for both.
+   * \tparam TriangleMeshRange a range of models of `FaceListGraph` (or of
+   *         `std::reference_wrapper`s to them) with triangle faces; the
+   *         points of their `vertex_point` maps have `x()`, `y()`, `z()`
+   *         convertible to double by `CGAL::to_double()`.
+   *
+   * \param np optional named parameters:
+   *   - `Boolean_isosurfacing::parameters::progress(f)`: `f(double)` is called
+   *     with fractions in [0, 1], from the calling thread;
+   *   - `Boolean_isosurfacing::parameters::max_memory_bytes(n)`: refuse to
+   *     start when the estimated memory exceeds `n` (default 8 GiB).
+   *
+   * Coordinates are converted to double; the predicates are exact for those
+   * doubles (so exact for `Epick` and `Simple_cartesian<double>` meshes).
+   *
+   * \throws Empty_input_error if `meshes` is empty or a mesh has no face.
+   * \throws Invalid_input_error if there are more than 64 meshes.
+   * \throws Non_triangle_face_error, Open_mesh_error, Non_finite_value_error
+   *         for a mesh that is not a closed triangle mesh with finite coordinates.
+   * \throws Lattice_too_large_error if the memory estimate exceeds the limit.
+   */
+  template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange,
+            typename NamedParameters = CGAL::parameters::Default_named_parameters>
+  static Lattice_classifier_3 classify(const TriangleMeshRange& meshes, const Regular_lattice_3& lattice,
+                                       const NamedParameters& np = parameters::default_values())
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    std::function<void(double)> callback;
+    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::progress_t>::value)
+      callback = get_parameter(np, internal_np::progress);
+    const std::size_t max_memory =
+        choose_parameter(get_parameter(np, internal_np::max_memory_bytes), default_max_memory_bytes);
+    std::size_t number_of_meshes = 0;
+    std::vector<internal::Lattice_triangle> triangles = read_meshes(meshes, number_of_meshes);
+    return classify_triangles<ConcurrencyTag>(std::move(triangles), number_of_meshes, lattice, max_memory, 0,
+                                              internal::Progress(callback));
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  // The building blocks of `classify()`, also used by marching_cubes_csg():
+  // it validates the meshes before anything else and reserves memory for
+  // its own arrays (`reserved_bytes`) in the estimate.
+  template <typename TriangleMeshRange>
+  static std::vector<internal::Lattice_triangle> read_meshes(const TriangleMeshRange& meshes,
+                                                             std::size_t& number_of_meshes)
+  {
+    number_of_meshes = std::size_t(std::distance(std::begin(meshes), std::end(meshes)));
+    if(number_of_meshes == 0)
+      throw Empty_input_error("no input mesh");
+    if(number_of_meshes > max_number_of_meshes)
+      throw Invalid_input_error(std::to_string(number_of_meshes) + " meshes given; at most " +
+                                std::to_string(max_number_of_meshes) + " are supported");
+    std::vector<internal::Lattice_triangle> triangles;
+    std::size_t total_faces = 0;
+    for(const auto& element : meshes)
+      total_faces += std::size_t(num_faces(internal::unwrap_mesh(element)));
+    triangles.reserve(total_faces);
+    std::uint32_t m = 0;
+    for(const auto& element : meshes)
+      internal::append_lattice_triangles(internal::unwrap_mesh(element), m++, triangles);
+    if(triangles.size() >= (std::size_t(1) << 32))
+      throw Invalid_input_error("the meshes have 2^32 triangles or more");
+    return triangles;
+  }
+
+  template <typename ConcurrencyTag>
+  static Lattice_classifier_3 classify_triangles(std::vector<internal::Lattice_triangle> triangles,
+                                                 std::size_t number_of_meshes, const Regular_lattice_3& lattice,
+                                                 std::size_t max_memory_bytes, std::size_t reserved_bytes,
+                                                 const internal::Progress& progress)
+  {
+    Lattice_classifier_3 result(lattice, number_of_meshes);
+    if(number_of_meshes <= 8)
+      result.template run<ConcurrencyTag, std::uint8_t>(triangles, max_memory_bytes, reserved_bytes, progress);
+    else if(number_of_meshes <= 16)
+      result.template run<ConcurrencyTag, std::uint16_t>(triangles, max_memory_bytes, reserved_bytes, progress);
+    else if(number_of_meshes <= 32)
+      result.template run<ConcurrencyTag, std::uint32_t>(triangles, max_memory_bytes, reserved_bytes, progress);
+    else
+      result.template run<ConcurrencyTag, std::uint64_t>(triangles, max_memory_bytes, reserved_bytes, progress);
+    return result;
+  }
+
+  static std::size_t bytes_per_mask(std::size_t number_of_meshes)
+  {
+    return number_of_meshes <= 8 ? 1 : (number_of_meshes <= 16 ? 2 : (number_of_meshes <= 32 ? 4 : 8));
+  }
+  /// \endcond
+
+  /// \name Access
+  /// @{
+
+  const Regular_lattice_3& lattice() const { return m_lattice; }
+  std::size_t number_of_meshes() const { return m_number_of_meshes; }
+
+  /// Bytes per lattice point of the masks: 1, 2, 4 or 8.
+  std::size_t bytes_per_mask() const { return bytes_per_mask(m_number_of_meshes); }
+
+  /// Bit m set iff lattice point `linear_index` is inside mesh m.
+  std::uint64_t mask(std::size_t linear_index) const
+  {
+    CGAL_precondition(linear_index < m_lattice.total_number_of_points());
+    switch(bytes_per_mask())
+    {
+    case 1: return m_masks8[linear_index];
+    case 2: return m_masks16[linear_index];
+    case 4: return m_masks32[linear_index];
+    default: return m_masks64[linear_index];
+    }
+  }
+  std::uint64_t mask(std::size_t i, std::size_t j, std::size_t k) const { return mask(m_lattice.linear_index(i, j, k)); }
+
+  bool is_inside(std::size_t mesh, std::size_t i, std::size_t j, std::size_t k) const
+  {
+    return ((mask(i, j, k) >> mesh) & 1) != 0;
+  }
+
+  /// Calls `f(const Mask* masks)` with the mask array (indexed by
+  /// `Regular_lattice_3::linear_index()`), `Mask` the unsigned type of
+  /// `bytes_per_mask()` bytes, and returns what `f` returns.
+  template <typename F>
+  decltype(auto) visit_masks(F&& f) const
+  {
+    switch(bytes_per_mask())
+    {
+    case 1: return f(m_masks8.data());
+    case 2: return f(m_masks16.data());
+    case 4: return f(m_masks32.data());
+    default: return f(m_masks64.data());
+    }
+  }
+
+  /// Number of lattice lines along `axis`.
+  std::size_t number_of_lines(int axis) const { return m_line_begin[axis].size() - 1; }
+
+  /// Index of the line along `axis` through point (i, j, k): the two other
+  /// indices, the smaller axis varying fastest.
+  std::size_t line_index(int axis, std::size_t i, std::size_t j, std::size_t k) const
+  {
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    switch(axis)
+    {
+    case 0: return j + n[1] * k;
+    case 1: return i + n[0] * k;
+    default: return i + n[0] * j;
+    }
+  }
+
+  /// The crossings on the lattice edges of a line along `axis`, sorted by
+  /// (`index`, `position`, `mesh`).
+  Crossing_range crossings_on_line(int axis, std::size_t line) const
+  {
+    CGAL_precondition(0 <= axis && axis < 3 && line < number_of_lines(axis));
+    const Crossing* base = m_crossings[axis].data();
+    return Crossing_range(base + m_line_begin[axis][line], base + m_line_begin[axis][line + 1]);
+  }
+
+  /// The crossings on the lattice edge from (i, j, k) to its neighbour along
+  /// `axis`, sorted by (`position`, `mesh`).
+  /// \pre the index of (i, j, k) along `axis` is below `number_of_points(axis) - 1`
+  Crossing_range crossings_on_edge(int axis, std::size_t i, std::size_t j, std::size_t k) const
+  {
+    CGAL_precondition(0 <= axis && axis < 3);
+    CGAL_precondition((axis == 0 ? i : (axis == 1 ? j : k)) + 1 < m_lattice.number_of_points(axis));
+    const Crossing_range line = crossings_on_line(axis, line_index(axis, i, j, k));
+    const std::uint32_t index = std::uint32_t((axis == 0 ? i : (axis == 1 ? j : k)) + 1);
+    const Crossing* first = std::lower_bound(line.begin(), line.end(), index,
+                                             [](const Crossing& c, std::uint32_t x) { return c.index < x; });
+    const Crossing* last = first;
+    while(last != line.end() && last->index == index)
+      ++last;
+    return Crossing_range(first, last);
+  }
+
+  /// Number of crossings on lattice edges along `axis` (crossings outside
+  /// the lattice are not stored).
+  std::size_t number_of_crossings(int axis) const { return m_crossings[axis].size(); }
+  std::size_t number_of_crossings() const
+  {
+    return m_crossings[0].size() + m_crossings[1].size() + m_crossings[2].size();
+  }
+
+  /// Wall-clock seconds spent on the lines along `axis` (for axis 0 this
+  /// includes the classification).
+  double seconds(int axis) const { return m_seconds[axis]; }
+
+  /// The memory estimate that was checked against `max_memory_bytes`.
+  std::size_t estimated_memory_bytes() const { return m_estimated_bytes; }
+
+  /// @}
+
+  /// The number of (lattice edge, mesh) pairs whose number of crossings has
+  /// not the parity of the change of the mesh's classification along the
+  /// edge.  Zero by construction for closed meshes; O(points + crossings).
+  std::size_t number_of_inconsistent_edges() const
+  {
+    return visit_masks([this](const auto* masks) {
+      typedef std::remove_const_t<std::remove_pointer_t<decltype(masks)>> Mask;
+      const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+      const std::array<std::size_t, 3> stride{{1, n[0], n[0] * n[1]}};
+      std::size_t bad = 0;
+      for(int axis = 0; axis < 3; ++axis)
+      {
+        const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
+        for(std::size_t jv = 0; jv < n[v]; ++jv)
+          for(std::size_t ju = 0; ju < n[u]; ++ju)
+          {
+            const Crossing_range line = crossings_on_line(axis, ju + n[u] * jv);
+            const std::size_t start = ju * stride[u] + jv * stride[v];
+            const Crossing* c = line.begin();
+            for(std::size_t t = 1; t < n[axis]; ++t)
+            {
+              Mask toggles = 0;
+              for(; c != line.end() && c->index == t; ++c)
+                toggles ^= Mask(Mask(1) << c->mesh);
+              const Mask change = Mask(masks[start + (t - 1) * stride[axis]] ^ masks[start + t * stride[axis]]);
+              bad += std::size_t(internal::popcount64(std::uint64_t(Mask(change ^ toggles))));
+            }
+            if(c != line.end()) // crossings out of order or out of range
+              bad += std::size_t(line.end() - c);
+          }
+      }
+      return bad;
+    });
+  }
+
+private:
+  // One crossing of a row of lines (the lines along an axis with a common v index).
+  struct Row_crossing
+  {
+    double position;
+    std::uint32_t u;
+    std::uint32_t index;
+    std::uint32_t mesh;
+
+    friend bool operator<(const Row_crossing& a, const Row_crossing& b)
+    {
+      if(a.u != b.u)
+        return a.u < b.u;
+      if(a.index != b.index)
+        return a.index < b.index;
+      if(a.position != b.position)
+        return a.position < b.position;
+      return a.mesh < b.mesh;
+    }
+  };
+
+  // The lines along an axis that may cross a triangle: u0 <= u < u1, v0 <= v < v1.
+  struct Line_block
+  {
+    std::uint32_t u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    bool empty() const { return u0 >= u1 || v0 >= v1; }
+    std::size_t size() const { return empty() ? 0 : std::size_t(u1 - u0) * std::size_t(v1 - v0); }
+  };
+
+  Lattice_classifier_3(const Regular_lattice_3& lattice, std::size_t number_of_meshes)
+    : m_lattice(lattice), m_number_of_meshes(number_of_meshes)
+  {}
+
+  template <typename Mask>
+  using Mask_vector = std::vector<Mask, internal::Default_init_allocator<Mask>>;
+
+  template <typename Mask>
+  Mask_vector<Mask>& mask_storage()
+  {
+    if constexpr(std::is_same<Mask, std::uint8_t>::value)
+      return m_masks8;
+    else if constexpr(std::is_same<Mask, std::uint16_t>::value)
+      return m_masks16;
+    else if constexpr(std::is_same<Mask, std::uint32_t>::value)
+      return m_masks32;
+    else
+      return m_masks64;
+  }
+
+  // A perturbed line through (u + du, v + dv) can only cross a triangle if
+  // umin <= u < umax and vmin <= v < vmax (the perturbation is positive).
+  Line_block line_block(const internal::Lattice_triangle& t, int axis,
+                        const std::array<std::vector<double>, 3>& coordinates) const
+  {
+    Line_block b;
+    if(t.projected_orientation(axis) == 0)
+      return b;
+    const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
+    const double umin = (std::min)({t.p[0][u], t.p[1][u], t.p[2][u]});
+    const double umax = (std::max)({t.p[0][u], t.p[1][u], t.p[2][u]});
+    const double vmin = (std::min)({t.p[0][v], t.p[1][v], t.p[2][v]});
+    const double vmax = (std::max)({t.p[0][v], t.p[1][v], t.p[2][v]});
+    auto first_not_below = [&](int a, double value) {
+      return std::uint32_t(internal::first_index_not_below(coordinates[a].data(), coordinates[a].size(),
+                                                           m_lattice.spacing(), value));
+    };
+    b.u0 = first_not_below(u, umin);
+    b.u1 = first_not_below(u, umax);
+    b.v0 = first_not_below(v, vmin);
+    b.v1 = first_not_below(v, vmax);
+    return b;
+  }
+
+  template <typename ConcurrencyTag, typename Mask>
+  void run(const std::vector<internal::Lattice_triangle>& triangles, std::size_t max_memory_bytes,
+           std::size_t reserved_bytes, const internal::Progress& progress)
+  {
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    const std::size_t T = triangles.size();
+    // The lattice coordinates, computed once by the one formula.
+    std::array<std::vector<double>, 3> coordinates;
+    for(int a = 0; a < 3; ++a)
+    {
+      coordinates[a].resize(n[a]);
+      for(std::size_t i = 0; i < n[a]; ++i)
+        coordinates[a][i] = m_lattice.coordinate(a, i);
+    }
+
+    // Line blocks of every triangle for the three axes, and the memory
+    // estimate, before the big allocations.
+    std::array<std::vector<Line_block>, 3> blocks;
+    std::array<std::size_t, 3> candidates{{0, 0, 0}}, binned{{0, 0, 0}};
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      blocks[axis].resize(T);
+      internal::concurrent_for<ConcurrencyTag>(
+          T, [&](std::size_t t) { blocks[axis][t] = line_block(triangles[t], axis, coordinates); });
+      for(const Line_block& b : blocks[axis])
+        if(!b.empty())
+        {
+          candidates[axis] += b.size();
+          binned[axis] += b.v1 - b.v0;
+        }
+    }
+    check_memory(triangles.size(), candidates, binned, sizeof(Mask), max_memory_bytes, reserved_bytes);
+
+    // Not initialized here: the x pass writes every entry, in parallel.
+    Mask_vector<Mask>& masks = mask_storage<Mask>();
+    masks.clear();
+    masks.resize(m_lattice.total_number_of_points());
+
+    const double weights[4] = {0, 0.5, 0.75, 1.0};
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      process_axis<ConcurrencyTag, Mask>(axis, triangles, blocks[axis], coordinates, masks,
+                                         progress.part(weights[axis], weights[axis + 1]));
+      std::vector<Line_block>().swap(blocks[axis]);
+      m_seconds[axis] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  }
+
+  void check_memory(std::size_t number_of_triangles, const std::array<std::size_t, 3>& candidates,
+                    const std::array<std::size_t, 3>& binned, std::size_t mask_bytes, std::size_t max_memory_bytes,
+                    std::size_t reserved_bytes)
+  {
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    // Doubles: the sum must not wrap around.
+    double bytes = double(m_lattice.total_number_of_points()) * double(mask_bytes) + double(reserved_bytes) +
+                   double(number_of_triangles) * double(sizeof(internal::Lattice_triangle) + 3 * sizeof(Line_block));
+    double largest_axis = 0;
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      const double lines = double(n[internal::line_u_axis(axis)]) * double(n[internal::line_v_axis(axis)]);
+      bytes += 8.0 * (lines + 1); // the line offsets stay
+      bytes += double(candidates[axis]) * double(sizeof(Crossing)); // at most that many crossings stay
+      // Transient, one axis at a time: row buffers and bins.
+      largest_axis = (std::max)(largest_axis, double(candidates[axis]) * double(sizeof(Row_crossing)) +
+                                                  double(binned[axis]) * 4.0 + 8.0 * double(n[internal::line_v_axis(axis)]));
+    }
+    bytes += largest_axis;
+    m_estimated_bytes = bytes < 1.8e19 ? std::size_t(bytes) : std::size_t(-1);
+    if(bytes > double(max_memory_bytes))
+    {
+      std::ostringstream out;
+      out.precision(3);
+      out << "the lattice " << n[0] << " x " << n[1] << " x " << n[2] << " with " << m_number_of_meshes
+          << " mesh(es) needs about " << bytes / double(1 << 30) << " GiB, more than the limit of "
+          << double(max_memory_bytes) / double(1 << 30)
+          << " GiB (named parameter max_memory_bytes): use a larger spacing or raise the limit";
+      throw Lattice_too_large_error(out.str());
+    }
+  }
+
+  // Sorts the crossings of a row by (u, index, position, mesh): a counting
+  // sort on u (there are few crossings per line), then an insertion sort of
+  // each line.
+  static void sort_row(std::vector<Row_crossing>& row, std::size_t nu)
+  {
+    if(row.size() < 2)
+      return;
+    if(row.size() < 32)
+    {
+      std::sort(row.begin(), row.end());
+      return;
+    }
+    std::vector<std::uint32_t> first(nu + 1, 0);
+    for(const Row_crossing& c : row)
+      ++first[c.u + 1];
+    for(std::size_t j = 0; j < nu; ++j)
+      first[j + 1] += first[j];
+    std::vector<Row_crossing> sorted(row.size());
+    for(const Row_crossing& c : row)
+      sorted[first[c.u]++] = c;
+    // first[j] is now the end of line j.
+    std::size_t begin = 0;
+    for(std::size_t j = 0; j < nu && begin < sorted.size(); ++j)
+    {
+      const std::size_t end = first[j];
+      for(std::size_t a = begin + 1; a < end; ++a)
+        for(std::size_t b = a; b > begin && sorted[b] < sorted[b - 1]; --b)
+          std::swap(sorted[b], sorted[b - 1]);
+      begin = end;
+    }
+    row.swap(sorted);
+  }
+
+  template <typename ConcurrencyTag, typename Mask>
+  void process_axis(int axis, const std::vector<internal::Lattice_triangle>& triangles,
+                    const std::vector<Line_block>& blocks, const std::array<std::vector<double>, 3>& coordinates,
+                    Mask_vector<Mask>& masks, const internal::Progress& progress)
+  {
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
+    const std::size_t nu = n[u], nv = n[v], na = n[axis];
+
+    // Bin the triangles to the rows (v indices) of lines they may cross, in
+    // increasing triangle order (a counting sort).
+    std::vector<std::size_t> row_begin(nv + 1, 0);
+    for(const Line_block& b : blocks)
+      if(!b.empty())
+        for(std::uint32_t r = b.v0; r < b.v1; ++r)
+          ++row_begin[r + 1];
+    for(std::size_t r = 0; r < nv; ++r)
+      row_begin[r + 1] += row_begin[r];
+    std::vector<std::uint32_t> row_triangles(row_begin[nv]);
+    {
+      std::vector<std::size_t> fill(row_begin.begin(), row_begin.end() - 1);
+      for(std::size_t t = 0; t < blocks.size(); ++t)
+        if(!blocks[t].empty())
+          for(std::uint32_t r = blocks[t].v0; r < blocks[t].v1; ++r)
+            row_triangles[fill[r]++] = std::uint32_t(t);
+    }
+
+    std::vector<std::vector<Row_crossing>> rows(nv);
+    const std::array<std::size_t, 3> stride{{1, n[0], n[0] * n[1]}};
+    internal::concurrent_for<ConcurrencyTag>(
+        nv,
+        [&](std::size_t r) {
+          std::vector<Row_crossing>& out = rows[r];
+          std::array<double, 3> p;
+          p[v] = coordinates[v][r];
+          for(std::size_t e = row_begin[r]; e < row_begin[r + 1]; ++e)
+          {
+            const internal::Lattice_triangle& t = triangles[row_triangles[e]];
+            const Line_block& b = blocks[row_triangles[e]];
+            for(std::uint32_t ju = b.u0; ju < b.u1; ++ju)
+            {
+              p[u] = coordinates[u][ju];
+              if(!internal::line_crosses_triangle(t, axis, p[u], p[v]))
+                continue;
+              const double position = internal::crossing_coordinate(t, axis, p[u], p[v]);
+              const std::size_t guess =
+                  internal::first_index_not_below(coordinates[axis].data(), na, m_lattice.spacing(), position);
+              const std::size_t index = internal::crossing_index(t, axis, coordinates[axis].data(), na, p, guess);
+              if(index >= na || (index == 0 && axis != 0))
+                continue; // not on a lattice edge, and no effect on the classification
+              out.push_back(Row_crossing{position, ju, std::uint32_t(index), t.mesh});
+            }
+          }
+          sort_row(out, nu);
+
+          if(axis == 0)
+          {
+            // Classification: the parity of the crossings before each point.
+            // The mask is constant between crossing indices, so each line is
+            // written once, run by run (the array is not initialized).
+            std::size_t i = 0;
+            for(std::size_t ju = 0; ju < nu; ++ju)
+            {
+              Mask* line = masks.data() + ju * stride[1] + r * stride[2];
+              Mask current = 0;
+              std::size_t written = 0;
+              for(; i < out.size() && out[i].u == ju; ++i)
+              {
+                std::fill(line + written, line + out[i].index, current);
+                written = out[i].index;
+                current ^= Mask(Mask(1) << out[i].mesh);
+              }
+              std::fill(line + written, line + na, current);
+            }
+            // Crossings before the first point only toggled the classification.
+            out.erase(std::remove_if(out.begin(), out.end(), [](const Row_crossing& c) { return c.index == 0; }),
+                      out.end());
+          }
+          for(Row_crossing& c : out)
+          {
+            const double low = coordinates[axis][c.index - 1], high = coordinates[axis][c.index];
+            if(!(c.position >= low))
+              c.position = low;
+            if(!(c.position <= high))
+              c.position = high;
+          }
+        },
+        progress.part(0, 0.95));
+
+    // Gather the rows into one array, line by line (line = ju + nu * r: the
+    // rows are consecutive blocks of lines, already sorted).
+    std::vector<std::size_t>& line_begin = m_line_begin[axis];
+    line_begin.assign(nu * nv + 1, 0);
+    std::vector<std::size_t> row_offset(nv + 1, 0);
+    for(std::size_t r = 0; r < nv; ++r)
+      row_offset[r + 1] = row_offset[r] + rows[r].size();
+    std::vector<Crossing>& crossings = m_crossings[axis];
+    crossings.resize(row_offset[nv]);
+    internal::concurrent_for<ConcurrencyTag>(nv, [&](std::size_t r) {
+      std::size_t out = row_offset[r];
+      for(const Row_crossing& c : rows[r])
+      {
+        crossings[out++] = Crossing{c.position, c.index, c.mesh};
+        ++line_begin[c.u + nu * r + 1];
+      }
+      std::vector<Row_crossing>().swap(rows[r]);
+    });
+    for(std::size_t l = 0; l < nu * nv; ++l)
+      line_begin[l + 1] += line_begin[l];
+    progress.report(1.0);
+  }
+
+  Regular_lattice_3 m_lattice;
+  std::size_t m_number_of_meshes = 0;
+  Mask_vector<std::uint8_t> m_masks8;
+  Mask_vector<std::uint16_t> m_masks16;
+  Mask_vector<std::uint32_t> m_masks32;
+  Mask_vector<std::uint64_t> m_masks64;
+  std::array<std::vector<std::size_t>, 3> m_line_begin;
+  std::array<std::vector<Crossing>, 3> m_crossings;
+  std::array<double, 3> m_seconds{{0, 0, 0}};
+  std::size_t m_estimated_bytes = 0;
+};
+
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_LATTICE_CLASSIFIER_3_H

@@ -1,0 +1,105 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MESH_TRIANGLES_3_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MESH_TRIANGLES_3_H
+
+// Reads closed triangle meshes (any FaceListGraph) into flat arrays of
+// double triangles, validating them on the way.
+
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+namespace internal {
+
+// Elements of a mesh range may be meshes or std::reference_wrapper<Mesh>.
+template <typename T>
+const T& unwrap_mesh(const T& t)
+{
+  return t;
+}
+template <typename T>
+const T& unwrap_mesh(const std::reference_wrapper<T>& t)
+{
+  return t.get();
+}
+
+template <typename TriangleMeshRange>
+using Mesh_of_range = std::decay_t<decltype(unwrap_mesh(*std::begin(std::declval<const TriangleMeshRange&>())))>;
+
+template <typename TriangleMesh>
+using Mesh_point = typename boost::property_traits<
+    typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
+
+/// Appends the triangles of `mesh` (input number `mesh_index`) to `out`.
+/// \throws Empty_input_error, Non_triangle_face_error, Open_mesh_error,
+/// Non_finite_value_error, each naming the mesh and the element.
+template <typename TriangleMesh>
+void append_lattice_triangles(const TriangleMesh& mesh, std::uint32_t mesh_index, std::vector<Lattice_triangle>& out)
+{
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::halfedge_descriptor halfedge_descriptor;
+  const std::string name = "mesh #" + std::to_string(mesh_index);
+  if(faces(mesh).empty())
+    throw Empty_input_error(name + " has no face");
+  const auto vpm = get_const_property_map(CGAL::vertex_point, mesh);
+  std::size_t vertex_number = 0;
+  for(const auto v : vertices(mesh))
+  {
+    const auto& p = get(vpm, v);
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+    if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+    {
+      std::ostringstream message;
+      message << name << ": vertex #" << vertex_number << " has a non-finite coordinate (" << x << ' ' << y << ' '
+              << z << ")";
+      throw Non_finite_value_error(message.str());
+    }
+    ++vertex_number;
+  }
+  auto coordinates = [&](halfedge_descriptor h) {
+    const auto& p = get(vpm, target(h, mesh));
+    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  std::size_t face_number = 0;
+  for(const auto f : faces(mesh))
+  {
+    const halfedge_descriptor h0 = halfedge(f, mesh);
+    const halfedge_descriptor h1 = next(h0, mesh);
+    const halfedge_descriptor h2 = next(h1, mesh);
+    if(next(h2, mesh) != h0)
+      throw Non_triangle_face_error(name + ": face #" + std::to_string(face_number) +
+                                    " is not a triangle (triangulate the mesh first, e.g. with "
+                                    "PMP::triangulate_faces)");
+    if(is_border(opposite(h0, mesh), mesh) || is_border(opposite(h1, mesh), mesh) ||
+       is_border(opposite(h2, mesh), mesh))
+      throw Open_mesh_error(name + " is not closed: face #" + std::to_string(face_number) +
+                            " has a border edge, so the mesh does not bound a solid");
+    out.push_back(make_lattice_triangle(coordinates(h0), coordinates(h1), coordinates(h2), mesh_index));
+    ++face_number;
+  }
+}
+
+} // namespace internal
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MESH_TRIANGLES_3_H
