@@ -24,6 +24,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -110,9 +111,25 @@ Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& ex
 {
   CGAL::Bbox_3 box;
   for(const Mesh& m : meshes) box += PMP::bbox(m);
-  const BI::Regular_lattice_3 lattice = options.cells > 0
-                                            ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells)
-                                            : BI::Regular_lattice_3::enclosing(box, options.spacing);
+  const BI::Regular_lattice_3 enclosing = options.cells > 0
+                                              ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells)
+                                              : BI::Regular_lattice_3::enclosing(box, options.spacing);
+  // `enclosing` puts a lattice plane on each side of the bounding box, so
+  // inputs with axis-aligned faces there (CAD parts) would have whole faces
+  // on lattice planes: still a correct, closed, 2-manifold result (one
+  // symbolic convention decides), but several lattice edges then put their
+  // vertex on the same lattice point, giving zero-area triangles.  Shifting
+  // the lattice by an irrational-looking fraction of a cell, with one more
+  // point per axis, moves those planes off the box.
+  const double shift = 0.381966011250105 * enclosing.spacing(); // (3 - sqrt 5) / 2
+  std::array<double, 3> origin = enclosing.origin();
+  std::array<std::size_t, 3> counts = enclosing.number_of_points();
+  for(int a = 0; a < 3; ++a)
+  {
+    origin[a] -= shift;
+    ++counts[a];
+  }
+  const BI::Regular_lattice_3 lattice(origin, enclosing.spacing(), counts);
   Mesh output;
   const Progress_bar progress;
   BI::Marching_cubes_csg_statistics statistics;
