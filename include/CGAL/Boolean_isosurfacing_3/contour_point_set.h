@@ -1,0 +1,492 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_CONTOUR_POINT_SET_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_CONTOUR_POINT_SET_H
+
+// Contouring oriented point samples (seeds/contour_tracing_signed_distance.txt):
+// Hoppe's tangent-plane signed distance (Tangent_plane_signed_distance_3.h)
+// sampled at the vertices of a regular lattice and contoured with the
+// package's watertight Marching Cubes table, refined on ambiguous faces by the
+// asymptotic decider.  Only cubes the surface crosses are visited.
+//
+// Conventions (doc/Boolean_isosurfacing_3/contouring.md):
+//  * f < 0 inside (normals point out of the solid).  The seed's bit is
+//    fb[k] = f(p_k) >= 0 ("above the surface" = OUTSIDE); the table's code has
+//    bit k = corner k INSIDE, so  table code = ~seed code & 0xFF.  f == 0 is
+//    outside, as in the seed.  Corner k sits at offset (k&1, (k>>1)&1, (k>>2)&1).
+//  * The vertex on lattice edge (v_i, v_j), v_i the lower end, is
+//    p = v_i + t (v_j - v_i) with t = -f(v_i) / (f(v_j) - f(v_i)) exactly as in
+//    the seed; it is computed once per global lattice edge and shared by the
+//    (up to 4) cubes around the edge: vertices are welded by edge id.
+//  * Asymptotic decider (Nielson & Hamann 1991): on a face whose inside
+//    corners are one diagonal, the bilinear interpolant's saddle value is
+//    (f_a f_c - f_b f_d) / (f_a + f_c - f_b - f_d) for the diagonals (a, c),
+//    (b, d); the inside corners are joined iff the saddle is inside (< 0),
+//    i.e. iff f_in1 * f_in2 > f_out1 * f_out2.  It reads only the face's 4
+//    values, so both cubes on a face take the same decision and the output
+//    stays closed and 2-manifold (Marching_cubes_table.h).
+//  * Triangles are oriented outward; the seed's normal cross(p1-p0, p2-p0)
+//    points out of the object.
+
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
+#include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/contouring_named_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+
+/// What a contouring run did; all counts are exact, times are wall clock.
+struct Contouring_report
+{
+  double cell_size = 0;                          ///< lattice spacing r
+  std::array<double, 3> origin{{0, 0, 0}};       ///< lattice point (0,0,0)
+  std::array<std::size_t, 3> number_of_cells{{0, 0, 0}};
+  std::size_t field_evaluations = 0;             ///< lattice points where f was evaluated
+  std::size_t undefined_points = 0;              ///< ... of which f was undefined
+  std::size_t visited_cubes = 0;                 ///< cubes examined by the traversal
+  std::size_t surface_cubes = 0;                 ///< cubes that produced triangles
+  std::size_t skipped_cubes = 0;                 ///< crossed cubes skipped: an undefined corner
+  std::size_t border_exits = 0;                  ///< crossed faces on the lattice border (holes)
+  std::size_t discontinuous_cubes = 0;           ///< skipped: f jumps across a sign-changing edge
+  std::size_t ambiguous_faces = 0;               ///< (counted once per cube side)
+  std::size_t joined_faces = 0;                  ///< ... where the decider joined the inside
+  std::size_t centre_vertices = 0;
+  std::size_t number_of_vertices = 0, number_of_triangles = 0;
+  double field_seconds = 0;                      ///< evaluating f at lattice points
+  double contouring_seconds = 0;                 ///< traversal + triangles, without field time
+};
+
+namespace internal {
+
+// Lattice point (i, j, k), each < 2^20, packed as i | j << 20 | k << 40; a
+// lattice edge as 4 * point + axis.  Sorting cube keys orders cubes by k, then
+// j, then i: the output order.
+constexpr unsigned lattice_bits = 20;
+constexpr std::int64_t lattice_limit = std::int64_t(1) << lattice_bits;
+
+inline std::uint64_t lattice_key(std::int64_t i, std::int64_t j, std::int64_t k)
+{
+  return std::uint64_t(i) | (std::uint64_t(j) << lattice_bits) | (std::uint64_t(k) << (2 * lattice_bits));
+}
+
+inline std::array<std::int64_t, 3> lattice_index(std::uint64_t key)
+{
+  const std::uint64_t mask = std::uint64_t(lattice_limit - 1);
+  return {{std::int64_t(key & mask), std::int64_t((key >> lattice_bits) & mask),
+           std::int64_t(key >> (2 * lattice_bits))}};
+}
+
+/// The seed's code: bit k = f(p_k) >= 0 (the corner is outside / above).
+inline unsigned seed_cube_code(const std::array<double, 8>& values)
+{
+  unsigned code = 0;
+  for(int k = 0; k < 8; ++k)
+    if(values[k] >= 0.0)
+      code |= 1u << k;
+  return code;
+}
+
+/// The table's code: bit k = corner k inside (f < 0) = the seed's code complemented.
+inline unsigned inside_cube_code(const std::array<double, 8>& values)
+{
+  return ~seed_cube_code(values) & 0xFFu;
+}
+
+/// The seed's interpolation parameter on edge (v_i, v_j):  t = -f_i / (f_j - f_i).
+/// \pre f_i and f_j lie on different sides (one < 0, the other >= 0).
+inline double edge_parameter(double f_i, double f_j) { return -f_i / (f_j - f_i); }
+
+/// Asymptotic decider: whether the inside corners of ambiguous face `face`
+/// are connected, from the face's 4 values only (the same double operations in
+/// both cubes that share the face, so they agree).
+inline bool asymptotic_decider_joins_inside(const std::array<double, 8>& values, int face)
+{
+  const std::array<int, 4> c = cube_face_corners(face);
+  const double diagonal_02 = values[c[0]] * values[c[2]];
+  const double diagonal_13 = values[c[1]] * values[c[3]];
+  const bool inside_02 = values[c[0]] < 0.0;
+  return inside_02 ? (diagonal_02 > diagonal_13) : (diagonal_13 > diagonal_02);
+}
+
+/// Whether a sign-changing edge of the cube has |f_j - f_i| > max_jump.
+inline bool has_jump_edge(const std::array<double, 8>& values, unsigned inside_code, double max_jump)
+{
+  for(int e = 0; e < 12; ++e)
+    if(is_sign_changing_edge(inside_code, e))
+    {
+      const std::array<int, 2> c = cube_edge_corners(e);
+      if(std::abs(values[c[1]] - values[c[0]]) > max_jump)
+        return true;
+    }
+  return false;
+}
+
+/// The join mask of a cube (bit f set = on ambiguous face f the inside corners are joined).
+inline unsigned asymptotic_decider_mask(const std::array<double, 8>& values, unsigned inside_code)
+{
+  unsigned mask = 0;
+  const unsigned ambiguous = ambiguous_face_mask(inside_code);
+  for(int f = 0; f < 6; ++f)
+    if(((ambiguous >> f) & 1u) && asymptotic_decider_joins_inside(values, f))
+      mask |= 1u << f;
+  return mask;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * Contours the zero set of `field` on a regular lattice, visiting only the
+ * cubes connected, through faces the surface crosses, to the cubes that
+ * contain `field.points()`.  Appends points and outward-oriented triangles
+ * (f < 0 is inside).
+ *
+ * \param field a model of `ContouringField_3`, e.g. `Tangent_plane_signed_distance_3<K>`:
+ *   `typedef Point_3` (constructible from 3 doubles, `p[a]` coordinates);
+ *   `points()`: a range of `Point_3`, the seeds (the samples);
+ *   `sampling_density()`, `noise_level()`: doubles (default cell size and margin);
+ *   `operator()(const Point_3&)`: `std::optional<double>`, empty = undefined.
+ * \param out_points a container of `K::Point_3` (push_back)
+ * \param out_triangles a container of 3-index polygons (push_back of `{a, b, c}`)
+ * \param np `Boolean_isosurfacing::parameters::`
+ *  - `cell_size(r)`: lattice spacing;
+ *  - `cells_along_longest_side(N)`: r = longest bounding-box side / N
+ *    (ignored when `cell_size` is given);
+ *  - default r = sampling_density / 3 (rho, see Tangent_plane_signed_distance_3),
+ *    about 1.25 times the mean sample spacing: finer lattices only resolve
+ *    the facets of the piecewise-planar f, coarser ones lose detail;
+ *  - `maximum_jump(j)`: a cube with a sign-changing edge along which f
+ *    changes by more than j is a discontinuity of f, not a surface, and is
+ *    skipped (default 3 r + 2 delta; `std::numeric_limits<double>::infinity()`
+ *    gives Hoppe's plain rule);
+ *  - `lattice_margin(m)`: cells added around the bounding box of the samples
+ *    (default ceil((rho + delta) / r) + 2, so that the traversal ends at
+ *    undefined corners before it reaches the lattice border).
+ * \throws Invalid_input_error a non-positive or non-finite r, or more than
+ *         2^20 lattice cells along an axis.
+ */
+template <typename ContouringField_3, typename PointOutRange, typename TriangleRange,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Contouring_report contour_signed_distance(const ContouringField_3& field,
+                                          PointOutRange& out_points, TriangleRange& out_triangles,
+                                          const NamedParameters& np = parameters::default_values())
+{
+  typedef typename ContouringField_3::Point_3 Point_3;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto total_start = std::chrono::steady_clock::now();
+  Contouring_report report;
+
+  // ---- lattice -----------------------------------------------------------
+  const auto& samples = field.points();
+  std::array<double, 3> lo, hi;
+  for(int a = 0; a < 3; ++a)
+  {
+    lo[a] = std::numeric_limits<double>::infinity();
+    hi[a] = -lo[a];
+  }
+  for(const Point_3& p : samples)
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = (std::min)(lo[a], CGAL::to_double(p[a]));
+      hi[a] = (std::max)(hi[a], CGAL::to_double(p[a]));
+    }
+  const double longest = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  double r = field.sampling_density() / 3; // ~1.25 x the mean sample spacing (CGAL's average spacing, 6 neighbours)
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cell_size_t>::value)
+    r = double(get_parameter(np, internal_np::cell_size));
+  else if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                            internal_np::cells_along_longest_side_t>::value)
+  {
+    const double n = double(get_parameter(np, internal_np::cells_along_longest_side));
+    if(!(n >= 1))
+      throw Invalid_input_error("cells_along_longest_side must be at least 1");
+    r = longest / n;
+  }
+  if(!(r > 0) || !std::isfinite(r))
+    throw Invalid_input_error("the lattice cell size must be positive and finite (got " + std::to_string(r) + ")");
+  // f is defined at most rho + delta beyond the samples (farther, the
+  // projection onto the nearest plane is too far from every sample), so with
+  // this margin the traversal stops at undefined corners, never at the
+  // lattice border: the zero set of f can extend past an open border of the
+  // sample (a tube continuing a cylinder, say) by up to rho + delta.
+  const double default_margin = std::ceil((field.sampling_density() + field.noise_level()) / r) + 2;
+  const double margin = double(choose_parameter(get_parameter(np, internal_np::lattice_margin), default_margin));
+  if(!(margin >= 0) || !std::isfinite(margin))
+    throw Invalid_input_error("lattice_margin must be >= 0");
+  std::array<std::int64_t, 3> cells;
+  for(int a = 0; a < 3; ++a)
+  {
+    report.origin[a] = lo[a] - margin * r;
+    const double n = std::ceil((hi[a] - lo[a]) / r + 2 * margin);
+    if(!(n < double(internal::lattice_limit - 1)))
+      throw Invalid_input_error("the lattice would have more than 2^20 cells along an axis; use a larger cell size");
+    cells[a] = (std::max)(std::int64_t(1), std::int64_t(n));
+    report.number_of_cells[a] = std::size_t(cells[a]);
+  }
+  report.cell_size = r;
+  // A signed distance is 1-Lipschitz: across a lattice edge of length r a true
+  // zero crossing changes f by at most r, plus the noise on both ends.  Hoppe's
+  // f is piecewise planar and jumps where the nearest centre changes; near the
+  // surface those jumps are small, but where two oppositely oriented sheets
+  // are closer than a neighbourhood (thin walls) the nearest centre alternates
+  // between them and f flips sign with a jump of twice the distance to the
+  // wall: "phantom" sheets that run away from the surface.  Such cubes are
+  // skipped (holes instead of phantom sheets).  Factor 3: slack for the plane
+  // switches near the surface; with 2 r, cactus.pts lost 4 genuine cubes.
+  const double max_jump = choose_parameter(get_parameter(np, internal_np::maximum_jump),
+                                           3 * r + 2 * field.noise_level());
+  const std::array<double, 3> origin = report.origin;
+  // One formula for every lattice point, so shared corners get identical coordinates.
+  auto lattice_point = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return Point_3(origin[0] + double(i) * r, origin[1] + double(j) * r, origin[2] + double(k) * r);
+  };
+
+  // ---- field at lattice points, cached (NaN = undefined) -------------------
+  std::unordered_map<std::uint64_t, double> value_cache;
+  value_cache.reserve(4 * samples.size());
+  double field_seconds = 0;
+  auto value_at = [&](std::int64_t i, std::int64_t j, std::int64_t k) -> double {
+    const std::uint64_t key = internal::lattice_key(i, j, k);
+    auto found = value_cache.find(key);
+    if(found != value_cache.end())
+      return found->second;
+    const auto start = std::chrono::steady_clock::now();
+    const std::optional<double> f = field(lattice_point(i, j, k));
+    field_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++report.field_evaluations;
+    double v = std::numeric_limits<double>::quiet_NaN();
+    if(f)
+      v = *f;
+    else
+      ++report.undefined_points;
+    value_cache.emplace(key, v);
+    return v;
+  };
+  auto cube_values = [&](const std::array<std::int64_t, 3>& c, std::array<double, 8>& values) {
+    bool defined = true;
+    for(int k = 0; k < 8; ++k)
+    {
+      values[k] = value_at(c[0] + (k & 1), c[1] + ((k >> 1) & 1), c[2] + ((k >> 2) & 1));
+      defined = defined && !std::isnan(values[k]);
+    }
+    return defined;
+  };
+
+  // ---- traversal: seeds, then flood through crossed faces ----------------
+  std::vector<std::uint64_t> stack;
+  std::unordered_set<std::uint64_t> visited;
+  visited.reserve(4 * samples.size());
+  for(const Point_3& p : samples)
+  {
+    std::array<std::int64_t, 3> c;
+    for(int a = 0; a < 3; ++a)
+      c[a] = (std::min)(cells[a] - 1,
+                        (std::max)(std::int64_t(0), std::int64_t(std::floor((CGAL::to_double(p[a]) - origin[a]) / r))));
+    const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
+    if(visited.insert(key).second)
+      stack.push_back(key);
+  }
+  std::sort(stack.begin(), stack.end(), std::greater<std::uint64_t>()); // pop smallest first
+  std::vector<std::uint64_t> surface_cubes;
+  std::array<double, 8> values;
+  while(!stack.empty())
+  {
+    const std::uint64_t key = stack.back();
+    stack.pop_back();
+    ++report.visited_cubes;
+    const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+    const bool defined = cube_values(c, values);
+    // Signs with undefined corners: only the defined ones can witness a crossing.
+    bool has_in = false, has_out = false;
+    for(int k = 0; k < 8; ++k)
+      if(!std::isnan(values[k]))
+        (values[k] < 0 ? has_in : has_out) = true;
+    if(!defined)
+    {
+      if(has_in && has_out)
+        ++report.skipped_cubes;
+      continue; // Hoppe: a cube with an undefined corner is skipped
+    }
+    const unsigned code = internal::inside_cube_code(values);
+    if(code == 0 || code == 0xFF)
+      continue;
+    if(internal::has_jump_edge(values, code, max_jump))
+    {
+      ++report.discontinuous_cubes; // a jump of f between two planes, not a surface
+      continue;
+    }
+    surface_cubes.push_back(key);
+    for(int f = 0; f < 6; ++f)
+    {
+      const std::array<int, 4> corners = cube_face_corners(f);
+      const bool first = is_inside_corner(code, corners[0]);
+      bool crossed = false;
+      for(int i = 1; i < 4; ++i)
+        crossed = crossed || (is_inside_corner(code, corners[i]) != first);
+      if(!crossed)
+        continue;
+      std::array<std::int64_t, 3> n = c;
+      n[cube_face_axis(f)] += cube_face_side(f) ? 1 : -1;
+      const int a = cube_face_axis(f);
+      if(n[a] < 0 || n[a] >= cells[a])
+      {
+        ++report.border_exits; // the default margin prevents this; it leaves a hole
+        continue;
+      }
+      const std::uint64_t neighbour = internal::lattice_key(n[0], n[1], n[2]);
+      if(visited.insert(neighbour).second)
+        stack.push_back(neighbour);
+    }
+  }
+
+  // ---- triangles, cube by cube in key order -------------------------------
+  std::sort(surface_cubes.begin(), surface_cubes.end());
+  report.surface_cubes = surface_cubes.size();
+  const Marching_cubes_table& table = Marching_cubes_table::instance();
+  std::unordered_map<std::uint64_t, std::size_t> edge_vertex;
+  edge_vertex.reserve(3 * surface_cubes.size());
+  std::size_t next_vertex = out_points.size();
+  const std::size_t first_vertex = next_vertex;
+  for(const std::uint64_t key : surface_cubes)
+  {
+    const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+    cube_values(c, values); // cached
+    const unsigned code = internal::inside_cube_code(values);
+    const unsigned join = internal::asymptotic_decider_mask(values, code);
+    const unsigned ambiguous = ambiguous_face_mask(code);
+    for(int f = 0; f < 6; ++f)
+      if((ambiguous >> f) & 1u)
+      {
+        ++report.ambiguous_faces;
+        if((join >> f) & 1u)
+          ++report.joined_faces;
+      }
+    std::array<std::size_t, 12 + Marching_cubes_table::max_number_of_polygons> local;
+    local.fill(std::size_t(-1));
+    auto edge_point = [&](int e) -> Point_3 {
+      const std::array<int, 2> ends = cube_edge_corners(e);
+      const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
+      const Point_3 vi = lattice_point(c[0] + o0[0], c[1] + o0[1], c[2] + o0[2]);
+      const Point_3 vj = lattice_point(c[0] + o1[0], c[1] + o1[1], c[2] + o1[2]);
+      const double t = internal::edge_parameter(values[ends[0]], values[ends[1]]);
+      return vi + t * (vj - vi);
+    };
+    auto vertex = [&](unsigned v) -> std::size_t {
+      if(local[v] != std::size_t(-1))
+        return local[v];
+      if(Marching_cubes_table::is_centre_vertex(v))
+      {
+        // Private to this cube: the centroid of its polygon's edge points.
+        double x = 0, y = 0, z = 0;
+        const auto polygon = table.polygon(code, join, v - 12);
+        for(std::size_t i = 0; i < polygon.size(); ++i)
+        {
+          const Point_3 p = edge_point(polygon[i]);
+          x += CGAL::to_double(p.x());
+          y += CGAL::to_double(p.y());
+          z += CGAL::to_double(p.z());
+        }
+        const double m = double(polygon.size());
+        out_points.push_back(Point_3(x / m, y / m, z / m));
+        ++report.centre_vertices;
+        return local[v] = next_vertex++;
+      }
+      const int e = int(v);
+      const std::array<int, 3> o = cube_edge_origin_offset(e);
+      const std::uint64_t edge_key =
+        4 * internal::lattice_key(c[0] + o[0], c[1] + o[1], c[2] + o[2]) + std::uint64_t(cube_edge_axis(e));
+      auto inserted = edge_vertex.emplace(edge_key, next_vertex);
+      if(inserted.second)
+      {
+        out_points.push_back(edge_point(e));
+        ++next_vertex;
+      }
+      return local[v] = inserted.first->second;
+    };
+    for(const auto& t : table.triangles(code, join))
+    {
+      const std::size_t a = vertex(t[0]), b = vertex(t[1]), d = vertex(t[2]);
+      out_triangles.push_back(typename TriangleRange::value_type{a, b, d});
+      ++report.number_of_triangles;
+    }
+  }
+  report.number_of_vertices = next_vertex - first_vertex;
+  report.field_seconds = field_seconds;
+  report.contouring_seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count() - field_seconds;
+  return report;
+}
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * Points (+ optional normals) to an outward-oriented triangle soup:
+ * `Tangent_plane_signed_distance_3` then `contour_signed_distance`.
+ * Named parameters: those of both (point_map, normal_map,
+ * number_of_neighbors, sampling_density, noise_level, cell_size,
+ * cells_along_longest_side, lattice_margin, geom_traits).
+ * \returns the contouring report.
+ */
+template <typename PointRange, typename PointOutRange, typename TriangleRange,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename = std::enable_if_t<!internal::Is_contouring_np<TriangleRange>::value>>
+Contouring_report contour_point_set(const PointRange& points, PointOutRange& out_points, TriangleRange& out_triangles,
+                                    const NamedParameters& np = parameters::default_values())
+{
+  typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
+  const Tangent_plane_signed_distance_3<Geom_traits> field(points, np);
+  return contour_signed_distance(field, out_points, out_triangles, np);
+}
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * As above, into a `MutableFaceGraph` (e.g. `Surface_mesh`), which is cleared
+ * first.  When no cube was skipped the soup is a closed 2-manifold by
+ * construction (the table is watertight).  Skipped cubes leave holes, and two
+ * holes can pinch a vertex (two skipped cubes diagonal around a lattice edge):
+ * such vertices are duplicated (PMP::orient_polygon_soup) so that the mesh is
+ * a valid, still consistently oriented, surface with border.
+ */
+template <typename PointRange, typename PolygonMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename = std::enable_if_t<internal::Is_contouring_np<NamedParameters>::value>>
+Contouring_report contour_point_set(const PointRange& points, PolygonMesh& mesh,
+                                    const NamedParameters& np = parameters::default_values())
+{
+  typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
+  std::vector<typename Geom_traits::Point_3> soup_points;
+  std::vector<std::array<std::size_t, 3>> soup_triangles;
+  const Contouring_report report = contour_point_set(points, soup_points, soup_triangles, np);
+  clear(mesh);
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_triangles))
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup_triangles);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup_triangles, mesh);
+  return report;
+}
+
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_CONTOUR_POINT_SET_H
