@@ -27,7 +27,7 @@
 //     whose normal is forced to +z (the top of a closed surface faces up).
 
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/contouring_named_parameters.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 
 #include <CGAL/Euclidean_distance.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

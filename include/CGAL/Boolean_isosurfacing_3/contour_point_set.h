@@ -32,7 +32,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/contouring_named_parameters.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -451,7 +451,7 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
  */
 template <typename PointRange, typename PointOutRange, typename TriangleRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<!internal::Is_contouring_np<TriangleRange>::value>>
+          typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value>>
 Contouring_report contour_point_set(const PointRange& points, PointOutRange& out_points, TriangleRange& out_triangles,
                                     const NamedParameters& np = parameters::default_values())
 {
@@ -471,7 +471,7 @@ Contouring_report contour_point_set(const PointRange& points, PointOutRange& out
  */
 template <typename PointRange, typename PolygonMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<internal::Is_contouring_np<NamedParameters>::value>>
+          typename = std::enable_if_t<internal::Is_named_function_parameters<NamedParameters>::value>>
 Contouring_report contour_point_set(const PointRange& points, PolygonMesh& mesh,
                                     const NamedParameters& np = parameters::default_values())
 {

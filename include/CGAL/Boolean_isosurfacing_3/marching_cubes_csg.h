@@ -68,10 +68,6 @@ struct Marching_cubes_csg_statistics
 
 namespace internal {
 
-template <typename T>
-struct Is_csg_named_parameters : std::false_type {};
-template <typename T, typename Tag, typename Base>
-struct Is_csg_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std::true_type {};
 
 template <typename T>
 struct Is_std_array : std::false_type {};
@@ -481,7 +477,7 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange, typename PointRange,
           typename TriangleRange, typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<!internal::Is_csg_named_parameters<TriangleRange>::value>>
+          typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value>>
 Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes, const Boolean_expression& expression,
                                                  const Regular_lattice_3& lattice, PointRange& points,
                                                  TriangleRange& triangles,
@@ -517,7 +513,7 @@ Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange, typename MutableFaceGraph,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<internal::Is_csg_named_parameters<NamedParameters>::value>>
+          typename = std::enable_if_t<internal::Is_named_function_parameters<NamedParameters>::value>>
 Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes, const Boolean_expression& expression,
                                                  const Regular_lattice_3& lattice, MutableFaceGraph& output,
                                                  const NamedParameters& np = parameters::default_values())

@@ -6,6 +6,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <type_traits>
+
 // The package's own named parameters.  CGAL 5.5 has no hook to add members
 // to `CGAL::Named_function_parameters`, so ours are free functions in
 // `CGAL::Boolean_isosurfacing::parameters` that start a chain; CGAL's own
@@ -22,7 +24,14 @@
   X(signed_volume_t, signed_volume)                   \
   X(check_self_intersections_t, check_self_intersections) \
   X(progress_t, progress)                             \
-  X(max_memory_bytes_t, max_memory_bytes)
+  X(max_memory_bytes_t, max_memory_bytes)             \
+  X(sampling_density_t, sampling_density)             \
+  X(noise_level_t, noise_level)                       \
+  X(cell_size_t, cell_size)                           \
+  X(cells_along_longest_side_t, cells_along_longest_side) \
+  X(lattice_margin_t, lattice_margin)                 \
+  X(number_of_neighbors_t, number_of_neighbors)       \
+  X(maximum_jump_t, maximum_jump)
 
 namespace CGAL {
 namespace Boolean_isosurfacing {
@@ -58,6 +67,17 @@ CGAL_BOOLEAN_ISOSURFACING_NAMED_PARAMETERS(CGAL_BI_DECLARE_FUNCTION)
 #undef CGAL_BI_DECLARE_FUNCTION
 
 } // namespace parameters
+
+namespace internal {
+
+// Tells overloads `f(a, b, np)` and `f(a, np)` apart, where `b` is a range.
+template <typename T>
+struct Is_named_function_parameters : std::false_type {};
+
+template <typename T, typename Tag, typename Base>
+struct Is_named_function_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std::true_type {};
+
+} // namespace internal
 } // namespace Boolean_isosurfacing
 } // namespace CGAL
 

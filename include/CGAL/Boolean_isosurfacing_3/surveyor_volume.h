@@ -91,15 +91,6 @@ private:
   std::size_t m_count = 0;
 };
 
-// Tells the soup overload `surveyor_volume(points, triangles, np)` apart from
-// the mesh overload `surveyor_volume(tmesh, np)`.
-template <typename T>
-struct Is_named_function_parameters : std::false_type {};
-
-template <typename T, typename Tag, typename Base>
-struct Is_named_function_parameters<CGAL::Named_function_parameters<T, Tag, Base>>
-    : std::true_type {};
-
 template <typename Index>
 bool is_negative(const Index& i)
 {
