@@ -7,6 +7,7 @@
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tetrahedra_sum.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -259,27 +260,12 @@ surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters:
   });
   const auto c = reference.centroid(gt);
 
-  // Validation is fused into the traversal: the opposite halfedge is next to
-  // h in memory for the common halfedge data structures, so the border test
-  // is nearly free.  (The traversal may run twice, see Tetrahedra_sum.h.)
+  // The traversal may run twice (see Tetrahedra_sum.h); it validates as it goes.
   const auto for_each_triangle = [&](const auto& f) {
-    std::size_t face_number = 0;
-    for(const auto face : faces(tmesh))
-    {
-      const halfedge_descriptor h0 = halfedge(face, tmesh);
-      const halfedge_descriptor h1 = next(h0, tmesh);
-      const halfedge_descriptor h2 = next(h1, tmesh);
-      if(next(h2, tmesh) != h0)
-        throw Non_triangle_face_error("face #" + std::to_string(face_number) +
-                                      " is not a triangle (surveyor_volume needs a triangle mesh; "
-                                      "see PMP::triangulate_faces)");
-      if(is_border(opposite(h0, tmesh), tmesh) || is_border(opposite(h1, tmesh), tmesh) ||
-         is_border(opposite(h2, tmesh), tmesh))
-        throw Open_mesh_error("the mesh is not closed: face #" + std::to_string(face_number) +
-                              " has a border edge, so the mesh does not bound a volume");
+    internal::for_each_closed_mesh_triangle(tmesh, "the mesh", [&](halfedge_descriptor h0, halfedge_descriptor h1,
+                                                                   halfedge_descriptor h2) {
       f(get(vpm, target(h0, tmesh)), get(vpm, target(h1, tmesh)), get(vpm, target(h2, tmesh)));
-      ++face_number;
-    }
+    });
   };
   const FT result = internal::sum_of_signed_tetrahedra(gt, c, for_each_triangle);
   internal::check_orientation_of_result(result, signed_result);

@@ -9,6 +9,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
@@ -79,23 +80,9 @@ void append_lattice_triangles(const TriangleMesh& mesh, std::uint32_t mesh_index
     const auto& p = get(vpm, target(h, mesh));
     return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
   };
-  std::size_t face_number = 0;
-  for(const auto f : faces(mesh))
-  {
-    const halfedge_descriptor h0 = halfedge(f, mesh);
-    const halfedge_descriptor h1 = next(h0, mesh);
-    const halfedge_descriptor h2 = next(h1, mesh);
-    if(next(h2, mesh) != h0)
-      throw Non_triangle_face_error(name + ": face #" + std::to_string(face_number) +
-                                    " is not a triangle (triangulate the mesh first, e.g. with "
-                                    "PMP::triangulate_faces)");
-    if(is_border(opposite(h0, mesh), mesh) || is_border(opposite(h1, mesh), mesh) ||
-       is_border(opposite(h2, mesh), mesh))
-      throw Open_mesh_error(name + " is not closed: face #" + std::to_string(face_number) +
-                            " has a border edge, so the mesh does not bound a solid");
+  for_each_closed_mesh_triangle(mesh, name, [&](halfedge_descriptor h0, halfedge_descriptor h1, halfedge_descriptor h2) {
     out.push_back(make_lattice_triangle(coordinates(h0), coordinates(h1), coordinates(h2), mesh_index));
-    ++face_number;
-  }
+  });
 }
 
 } // namespace internal

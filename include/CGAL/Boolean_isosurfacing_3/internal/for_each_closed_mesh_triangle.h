@@ -1,0 +1,54 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_FOR_EACH_CLOSED_MESH_TRIANGLE_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_FOR_EACH_CLOSED_MESH_TRIANGLE_H
+
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cstddef>
+#include <string>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+namespace internal {
+
+// Calls f(h0, h1, h2) with the three halfedges of every face of `mesh`,
+// checking on the way that the mesh is a closed triangle mesh: a face that
+// is not a triangle throws Non_triangle_face_error, a border edge
+// Open_mesh_error; `mesh_name` ("the mesh", "mesh #2") starts the messages.
+// The checks are fused into the traversal because the opposite halfedge is
+// next to h in memory for the common halfedge data structures, so they are
+// nearly free in a loop that visits the faces anyway.
+template <typename TriangleMesh, typename Function>
+void for_each_closed_mesh_triangle(const TriangleMesh& mesh, const std::string& mesh_name, const Function& f)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  std::size_t face_number = 0;
+  for(const auto face : faces(mesh))
+  {
+    const halfedge_descriptor h0 = halfedge(face, mesh);
+    const halfedge_descriptor h1 = next(h0, mesh);
+    const halfedge_descriptor h2 = next(h1, mesh);
+    if(next(h2, mesh) != h0)
+      throw Non_triangle_face_error(mesh_name + ": face #" + std::to_string(face_number) +
+                                    " is not a triangle (triangulate the mesh first, e.g. with "
+                                    "PMP::triangulate_faces)");
+    if(is_border(opposite(h0, mesh), mesh) || is_border(opposite(h1, mesh), mesh) ||
+       is_border(opposite(h2, mesh), mesh))
+      throw Open_mesh_error(mesh_name + " is not closed: face #" + std::to_string(face_number) +
+                            " has a border edge, so it does not bound a solid");
+    f(h0, h1, h2);
+    ++face_number;
+  }
+}
+
+} // namespace internal
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_FOR_EACH_CLOSED_MESH_TRIANGLE_H
