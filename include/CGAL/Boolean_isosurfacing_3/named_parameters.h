@@ -31,7 +31,9 @@
   X(cells_along_longest_side_t, cells_along_longest_side) \
   X(lattice_margin_t, lattice_margin)                 \
   X(number_of_neighbors_t, number_of_neighbors)       \
-  X(maximum_jump_t, maximum_jump)
+  X(maximum_jump_t, maximum_jump)                     \
+  X(close_at_domain_boundary_t, close_at_domain_boundary) \
+  X(slab_layers_t, slab_layers)
 
 namespace CGAL {
 namespace Boolean_isosurfacing {

@@ -1,0 +1,423 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_H
+
+#include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
+#include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/Scalar_fields.h>
+#include <CGAL/Boolean_isosurfacing_3/Tetrahedral_grid_3.h>
+#include <CGAL/Boolean_isosurfacing_3/Tetrahedral_mesh_3.h>
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_tetrahedron.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// What `extract_boolean_isosurface()` did, and how long each stage took.
+struct Boolean_isosurface_statistics
+{
+  std::size_t number_of_tetrahedra = 0;
+  /// Tetrahedra that needed more than the sign test on their corner values.
+  std::size_t number_of_evaluated_tetrahedra = 0;
+  std::size_t number_of_vertices = 0;
+  std::size_t number_of_polygons = 0;
+  /// Preparing the expression (the replacement of the seed's tables).
+  double table_seconds = 0;
+  /// Visiting the tetrahedra and building the polygons.
+  double extraction_seconds = 0;
+  /// Welding the pieces of the parallel chunks into one soup.
+  double welding_seconds = 0;
+};
+
+namespace internal {
+
+inline double seconds_since(const std::chrono::steady_clock::time_point& t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The polygons of one chunk of tetrahedra, with chunk-local vertex indices.
+struct Tbiso_chunk
+{
+  std::vector<Tbiso_vertex_key> keys;
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::size_t> polygon_begin{0};
+  std::vector<std::size_t> polygon_vertices;
+  std::vector<int> labels;
+  std::size_t evaluated = 0;
+  std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> index;
+
+  void add(int label, const Tbiso_tetrahedron_evaluator::Vertex* v, std::size_t n)
+  {
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      auto inserted = index.emplace(v[k].key, keys.size());
+      if(inserted.second)
+      {
+        keys.push_back(v[k].key);
+        points.push_back(v[k].point);
+      }
+      polygon_vertices.push_back(inserted.first->second);
+    }
+    polygon_begin.push_back(polygon_vertices.size());
+    labels.push_back(label);
+  }
+};
+
+template <typename Point_3>
+void check_fields(std::size_t number_of_vertices, const Scalar_fields& fields, const Boolean_expression& expression)
+{
+  if(fields.number_of_vertices() != number_of_vertices)
+    throw Invalid_input_error("the fields have values at " + std::to_string(fields.number_of_vertices()) +
+                              " vertices but the domain has " + std::to_string(number_of_vertices));
+  if(expression.number_of_variables() > fields.number_of_fields())
+    throw Invalid_input_error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
+                              " but there are only " + std::to_string(fields.number_of_fields()) + " fields");
+  fields.check_finite();
+}
+
+// Appends the chunks, in order, to `out`.  Vertices are welded by key;
+// `shared(key)` tells whether a key may occur in another chunk (only those
+// go through the global map).  The order is that of first appearance, so the
+// result does not depend on how the chunks were scheduled.
+template <typename Point_3, typename SharedKey>
+void weld_chunks(std::vector<Tbiso_chunk>& chunks, Boolean_isosurface_soup<Point_3>& out, const SharedKey& shared)
+{
+  out.clear();
+  std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> global;
+  std::vector<std::size_t> to_global;
+  for(Tbiso_chunk& chunk : chunks)
+  {
+    chunk.index.clear();
+    to_global.resize(chunk.keys.size());
+    for(std::size_t v = 0; v < chunk.keys.size(); ++v)
+    {
+      if(shared(chunk.keys[v]))
+      {
+        auto inserted = global.emplace(chunk.keys[v], out.points.size());
+        to_global[v] = inserted.first->second;
+        if(!inserted.second)
+          continue;
+      }
+      else
+        to_global[v] = out.points.size();
+      const std::array<double, 3>& p = chunk.points[v];
+      out.points.push_back(Point_3(p[0], p[1], p[2]));
+    }
+    for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
+    {
+      std::vector<std::size_t> polygon;
+      polygon.reserve(chunk.polygon_begin[p + 1] - chunk.polygon_begin[p]);
+      for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
+        polygon.push_back(to_global[chunk.polygon_vertices[k]]);
+      out.polygons.push_back(std::move(polygon));
+      out.face_fields.push_back(chunk.labels[p]);
+    }
+    chunk = Tbiso_chunk(); // release memory early
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// Samples callables at the vertices of a domain (`Tetrahedral_grid_3` or
+/// `Tetrahedral_mesh_3`): field `i` at vertex `v` is `functions[i](point(v))`.
+template <typename Domain, typename Function>
+Scalar_fields sample_fields(const Domain& domain, const std::vector<Function>& functions)
+{
+  Scalar_fields fields(domain.number_of_vertices(), functions.size());
+  const std::size_t n = functions.size();
+  for(std::size_t v = 0; v < domain.number_of_vertices(); ++v)
+  {
+    const auto p = domain.point(v);
+    for(std::size_t i = 0; i < n; ++i)
+      fields.data()[v * n + i] = functions[i](p);
+  }
+  return fields;
+}
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// TBISO on a regular tetrahedral grid: the boundary of the regularized
+/// Boolean set `expression(f_0, ..., f_{N-1})` (literal `fi`: f_i < 0), as a
+/// welded polygon soup labelled by field (see `Boolean_isosurface_soup`).
+///
+/// The grid is processed by slabs of cube layers along z, in parallel under
+/// `Parallel_tag`; the output is identical for both tags.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{close_at_domain_boundary}
+///     \cgalParamDescription{close the set where it reaches the boundary of the grid, as if the expression were false outside}
+///     \cgalParamType{bool} \cgalParamDefault{false}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{slab_layers}
+///     \cgalParamDescription{cube layers per slab (the unit of parallel work)}
+///     \cgalParamType{std::size_t} \cgalParamDefault{chosen from the grid size}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called with the fraction done, from the calling thread}
+///     \cgalParamType{std::function<void(double)>} \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Invalid_input_error if the fields do not match the grid, are not
+/// finite, or the expression names a field that does not exist.
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename Point_3,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Boolean_isosurface_statistics
+extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Scalar_fields& fields,
+                           const Boolean_expression& expression, Boolean_isosurface_soup<Point_3>& out,
+                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef internal::Tbiso_tetrahedron_evaluator Evaluator;
+
+  internal::check_fields<Point_3>(grid.number_of_vertices(), fields, expression);
+  const bool close = choose_parameter(get_parameter(np, internal_np::close_at_domain_boundary), false);
+  const std::function<void(double)> progress_callback =
+      choose_parameter(get_parameter(np, internal_np::progress), std::function<void(double)>());
+
+  Boolean_isosurface_statistics stats;
+  stats.number_of_tetrahedra = grid.number_of_tetrahedra();
+  auto start = std::chrono::steady_clock::now();
+  const Evaluator prototype(expression, fields.number_of_fields(), close);
+  const std::uint64_t expression_fields = prototype.expression_fields();
+  stats.table_seconds = internal::seconds_since(start);
+
+  const std::array<std::size_t, 3>& n = grid.vertex_counts();
+  const std::size_t layers = n[2] - 1;
+  const std::size_t default_slab = std::max<std::size_t>(1, (layers + 63) / 64);
+  const std::size_t slab = std::max<std::size_t>(
+      1, choose_parameter(get_parameter(np, internal_np::slab_layers), default_slab));
+  const std::size_t number_of_slabs = (layers + slab - 1) / slab;
+  const std::size_t layer_size = n[0] * n[1];
+  const std::size_t N = fields.number_of_fields();
+  const double* values = fields.data().data();
+
+  start = std::chrono::steady_clock::now();
+  std::vector<internal::Tbiso_chunk> chunks(number_of_slabs);
+  internal::concurrent_for<ConcurrencyTag>(
+      number_of_slabs,
+      [&](std::size_t s) {
+        internal::Tbiso_chunk& chunk = chunks[s];
+        Evaluator evaluator = prototype;
+        const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+        // Sign masks of two vertex layers, rolled along z.
+        std::vector<std::uint64_t> negative[2], positive[2];
+        auto fill_masks = [&](std::size_t k, int slot) {
+          negative[slot].resize(layer_size);
+          positive[slot].resize(layer_size);
+          const double* layer = values + k * layer_size * N;
+          for(std::size_t v = 0; v < layer_size; ++v)
+            internal::field_sign_masks(layer + v * N, expression_fields, negative[slot][v], positive[slot][v]);
+        };
+        fill_masks(k_begin, 0);
+        std::array<internal::Tbiso_corner, 4> corner;
+        std::array<std::uint64_t, 4> tet_negative, tet_positive;
+        for(std::size_t k = k_begin; k < k_end; ++k)
+        {
+          const int lower = int((k - k_begin) & 1), upper = 1 - lower;
+          fill_masks(k + 1, upper);
+          for(std::size_t j = 0; j + 1 < n[1]; ++j)
+            for(std::size_t i = 0; i + 1 < n[0]; ++i)
+            {
+              // The 8 cube corners' masks; a cube whose corners all agree and
+              // have no zero is skipped whole (the common case).
+              std::uint64_t cube_negative[8], cube_positive[8];
+              bool uniform = true;
+              for(int c = 0; c < 8; ++c)
+              {
+                const std::size_t v = (i + (c & 1)) + n[0] * (j + ((c >> 1) & 1));
+                const int slot = (c >> 2) ? upper : lower;
+                cube_negative[c] = negative[slot][v];
+                cube_positive[c] = positive[slot][v];
+                uniform &= cube_negative[c] == cube_negative[0] && cube_positive[c] == cube_positive[0];
+              }
+              const bool on_boundary = i == 0 || j == 0 || k == 0 || i + 2 == n[0] || j + 2 == n[1] || k + 2 == n[2];
+              if(uniform && (cube_negative[0] | cube_positive[0]) == expression_fields &&
+                 (!close || !on_boundary || !evaluator.evaluate(cube_negative[0], cube_positive[0])))
+                continue;
+              for(int t = 0; t < 6; ++t)
+              {
+                const std::array<std::array<int, 3>, 4> offsets = Tetrahedral_grid_3<GeomTraits>::kuhn_offsets(t);
+                unsigned boundary_faces = 0;
+                for(int l = 0; l < 4; ++l)
+                {
+                  const std::array<int, 3>& d = offsets[Tetrahedral_grid_3<GeomTraits>::kuhn_corner(t, l)];
+                  const int c = d[0] | (d[1] << 1) | (d[2] << 2);
+                  tet_negative[l] = cube_negative[c];
+                  tet_positive[l] = cube_positive[c];
+                }
+                if(close && on_boundary)
+                  for(int l = 0; l < 4; ++l)
+                    if(grid.neighbor_apex(i, j, k, t, l) == Tetrahedral_grid_3<GeomTraits>::no_vertex)
+                      boundary_faces |= 1u << l;
+                if(evaluator.is_trivially_empty(tet_negative, tet_positive, boundary_faces))
+                  continue;
+                ++chunk.evaluated;
+                const typename Tetrahedral_grid_3<GeomTraits>::Tetrahedron tet = grid.tetrahedron(i, j, k, t);
+                for(int l = 0; l < 4; ++l)
+                {
+                  corner[l].id = tet[l];
+                  corner[l].values = values + tet[l] * N;
+                  corner[l].negative = tet_negative[l];
+                  corner[l].positive = tet_positive[l];
+                  corner[l].position = grid.position(tet[l]);
+                }
+                evaluator.evaluate_tetrahedron(
+                    corner,
+                    [&](int l) {
+                      Evaluator::Apex a{false, 0, 0};
+                      const std::size_t v = grid.neighbor_apex(i, j, k, t, l);
+                      if(v != Tetrahedral_grid_3<GeomTraits>::no_vertex)
+                      {
+                        a.exists = true;
+                        internal::field_sign_masks(values + v * N, expression_fields, a.negative, a.positive);
+                      }
+                      return a;
+                    },
+                    [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count); });
+              }
+            }
+        }
+      },
+      internal::Progress(progress_callback));
+  stats.extraction_seconds = internal::seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  for(const internal::Tbiso_chunk& chunk : chunks)
+    stats.number_of_evaluated_tetrahedra += chunk.evaluated;
+  // A vertex can be shared by two slabs only if it lies in a vertex layer
+  // that bounds a slab: all its carrier corners are in that layer.
+  internal::weld_chunks(chunks, out, [&](const internal::Tbiso_vertex_key& key) {
+    const std::size_t z = key.corners[0] / layer_size;
+    if(z % slab != 0)
+      return false;
+    for(int c = 1; c < 4 && key.corners[c] != Tetrahedral_grid_3<GeomTraits>::no_vertex; ++c)
+      if(key.corners[c] / layer_size != z)
+        return false;
+    return true;
+  });
+  stats.welding_seconds = internal::seconds_since(start);
+  stats.number_of_vertices = out.points.size();
+  stats.number_of_polygons = out.polygons.size();
+  return stats;
+}
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// TBISO on an unstructured tetrahedral mesh; as the grid overload.
+/// `close_at_domain_boundary` closes the set on the boundary faces of the mesh.
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename Point_3,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Boolean_isosurface_statistics
+extract_boolean_isosurface(const Tetrahedral_mesh_3<GeomTraits>& mesh, const Scalar_fields& fields,
+                           const Boolean_expression& expression, Boolean_isosurface_soup<Point_3>& out,
+                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef internal::Tbiso_tetrahedron_evaluator Evaluator;
+
+  internal::check_fields<Point_3>(mesh.number_of_vertices(), fields, expression);
+  const bool close = choose_parameter(get_parameter(np, internal_np::close_at_domain_boundary), false);
+  const std::function<void(double)> progress_callback =
+      choose_parameter(get_parameter(np, internal_np::progress), std::function<void(double)>());
+
+  Boolean_isosurface_statistics stats;
+  stats.number_of_tetrahedra = mesh.number_of_tetrahedra();
+  auto start = std::chrono::steady_clock::now();
+  const Evaluator prototype(expression, fields.number_of_fields(), close);
+  const std::uint64_t expression_fields = prototype.expression_fields();
+  stats.table_seconds = internal::seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  const std::size_t N = fields.number_of_fields();
+  const double* values = fields.data().data();
+  std::vector<std::uint64_t> negative(mesh.number_of_vertices()), positive(mesh.number_of_vertices());
+  for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+    internal::field_sign_masks(values + v * N, expression_fields, negative[v], positive[v]);
+
+  const std::size_t T = mesh.number_of_tetrahedra();
+  const std::size_t chunk_size = std::max<std::size_t>(4096, (T + 63) / 64);
+  const std::size_t number_of_chunks = (T + chunk_size - 1) / chunk_size;
+  std::vector<internal::Tbiso_chunk> chunks(number_of_chunks);
+  internal::concurrent_for<ConcurrencyTag>(
+      number_of_chunks,
+      [&](std::size_t s) {
+        internal::Tbiso_chunk& chunk = chunks[s];
+        Evaluator evaluator = prototype;
+        std::array<internal::Tbiso_corner, 4> corner;
+        std::array<std::uint64_t, 4> tet_negative, tet_positive;
+        for(std::size_t t = s * chunk_size; t < std::min(T, (s + 1) * chunk_size); ++t)
+        {
+          const typename Tetrahedral_mesh_3<GeomTraits>::Tetrahedron& tet = mesh.tetrahedron(t);
+          unsigned boundary_faces = 0;
+          for(int l = 0; l < 4; ++l)
+          {
+            tet_negative[l] = negative[tet[l]];
+            tet_positive[l] = positive[tet[l]];
+            if(close && mesh.neighbor_apex(t, l) == Tetrahedral_mesh_3<GeomTraits>::no_vertex)
+              boundary_faces |= 1u << l;
+          }
+          if(evaluator.is_trivially_empty(tet_negative, tet_positive, boundary_faces))
+            continue;
+          ++chunk.evaluated;
+          for(int l = 0; l < 4; ++l)
+          {
+            corner[l].id = tet[l];
+            corner[l].values = values + tet[l] * N;
+            corner[l].negative = tet_negative[l];
+            corner[l].positive = tet_positive[l];
+            corner[l].position = mesh.position(tet[l]);
+          }
+          evaluator.evaluate_tetrahedron(
+              corner,
+              [&](int l) {
+                Evaluator::Apex a{false, 0, 0};
+                const std::size_t v = mesh.neighbor_apex(t, l);
+                if(v != Tetrahedral_mesh_3<GeomTraits>::no_vertex)
+                {
+                  a.exists = true;
+                  a.negative = negative[v];
+                  a.positive = positive[v];
+                }
+                return a;
+              },
+              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count); });
+        }
+      },
+      internal::Progress(progress_callback));
+  stats.extraction_seconds = internal::seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  for(const internal::Tbiso_chunk& chunk : chunks)
+    stats.number_of_evaluated_tetrahedra += chunk.evaluated;
+  internal::weld_chunks(chunks, out, [](const internal::Tbiso_vertex_key&) { return true; });
+  stats.welding_seconds = internal::seconds_since(start);
+  stats.number_of_vertices = out.points.size();
+  stats.number_of_polygons = out.polygons.size();
+  return stats;
+}
+
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_H
