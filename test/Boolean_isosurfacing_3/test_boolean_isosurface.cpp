@@ -432,3 +432,147 @@ TEST(BooleanIsosurface, BadInput)
   EXPECT_THROW(BI::extract_boolean_isosurface(grid, small, BI::Boolean_expression::parse("f0"), s),
                BI::Invalid_input_error);
 }
+
+TEST(BooleanIsosurface, SphereThroughGridVertices)
+{
+  // Radius 0.5 on a grid of spacing 0.25: the field is exactly zero at the
+  // six grid vertices (+-0.5, 0, 0), (0, +-0.5, 0), (0, 0, +-0.5).
+  const Grid grid = unit_grid(9);
+  const Soup s = extract(grid, {sphere(0, 0, 0, 0.5)}, "f0", false);
+  EXPECT_TRUE(is_closed_oriented_manifold(s));
+  std::size_t on_vertex = 0;
+  for(const Point& p : s.points)
+    on_vertex += (p == Point(0.5, 0, 0) || p == Point(-0.5, 0, 0) || p == Point(0, 0.5, 0) || p == Point(0, -0.5, 0) ||
+                  p == Point(0, 0, 0.5) || p == Point(0, 0, -0.5));
+  EXPECT_EQ(on_vertex, 6u) << "each grid vertex on the sphere is one output vertex";
+  EXPECT_NEAR(volume(s), 4 * pi * 0.125 / 3, 0.25 * 4 * pi * 0.125 / 3);
+}
+
+TEST(BooleanIsosurface, ThreePlanesThroughAPointInsideATetrahedron)
+{
+  // (a, b, c) is at fractions (1/4, 1/2, 3/4) of a grid cube: strictly inside
+  // one tetrahedron, so the corner comes from a 4x4 determinant.
+  const double a = 0.3125, b = -0.125, c = 0.1875;
+  const Grid grid = unit_grid(9);
+  const Soup box = extract(grid, {plane(1, 0, 0, -a), plane(0, 1, 0, -b), plane(0, 0, 1, -c)}, "f0 & f1 & f2");
+  EXPECT_TRUE(is_closed_oriented_manifold(box));
+  EXPECT_NEAR(volume(box), (a + 1) * (b + 1) * (c + 1), 1e-12);
+  const BI::Crease_network creases = BI::extract_crease_network(box);
+  EXPECT_EQ(creases.corners.size(), 4u);
+  double nearest = 1e9;
+  for(std::size_t v : creases.corners)
+    nearest = std::min(nearest, std::sqrt(CGAL::to_double(CGAL::squared_distance(box.points[v], Point(a, b, c)))));
+  EXPECT_LT(nearest, 1e-15);
+  // Tilted planes through the same point: the complement of their union.
+  const Soup tilted = extract(grid, {plane(1, 0.5, 0.25, -(a + 0.5 * b + 0.25 * c)),
+                                     plane(-0.25, 1, 0.5, -(-0.25 * a + b + 0.5 * c)),
+                                     plane(0.5, -0.25, 1, -(0.5 * a - 0.25 * b + c))},
+                              "!f0 & !f1 | !f2", false);
+  EXPECT_GT(tilted.polygons.size(), 0u);
+  const BI::Crease_network t = BI::extract_crease_network(tilted);
+  bool corner_at_point = false;
+  for(std::size_t v : t.corners)
+    corner_at_point |= std::sqrt(CGAL::to_double(CGAL::squared_distance(tilted.points[v], Point(a, b, c)))) < 1e-14;
+  EXPECT_TRUE(corner_at_point);
+}
+
+// Crease polylines and corners converge to the analytic curves as O(h^2).
+TEST(BooleanIsosurface, CreasesAndCornersConvergeQuadratically)
+{
+  const double r = 0.6, d = 0.35, e = 0.5;
+  // Spheres at (+-d, 0, 0) and (0, e, 0): pairwise circles, two triple points.
+  const double y = (e * e - d * d) / (2 * e), z = std::sqrt(r * r - d * d - y * y);
+  const std::vector<Field> f{sphere(d, 0, 0, r), sphere(-d, 0, 0, r), sphere(0, e, 0, r)};
+  double previous_curve = 1e9, previous_corner = 1e9;
+  for(std::size_t n : {17, 33, 65})
+  {
+    const Soup s = extract(unit_grid(n), f, "f0 & f1 & f2", false);
+    ASSERT_TRUE(is_closed_oriented_manifold(s));
+    const BI::Crease_network net = BI::extract_crease_network(s);
+    ASSERT_EQ(net.corners.size(), 2u) << n;
+    EXPECT_EQ(net.polylines.size(), 3u) << n << ": one arc per pair of spheres, between the two corners";
+    // Distance of crease vertices to the analytic circle f_i = f_j = 0 of
+    // the two fields labelling the faces around them.
+    double worst = 0;
+    for(const auto& line : net.polylines)
+      for(std::size_t v : line)
+      {
+        const Point& p = s.points[v];
+        // The crease lies on two of the spheres: distance to the nearest pair's circle.
+        double best = 1e9;
+        for(int i = 0; i < 3; ++i)
+          for(int j = i + 1; j < 3; ++j)
+            best = std::min(best, std::max(std::abs(f[i](p)), std::abs(f[j](p))));
+        worst = std::max(worst, best);
+      }
+    double corner_error = 0;
+    for(std::size_t c : net.corners)
+    {
+      const Point& p = s.points[c];
+      corner_error = std::max(corner_error, std::min(std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point(0, y, z)))),
+                                                     std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point(0, y, -z))))));
+    }
+    const double h = 2.0 / double(n - 1);
+    std::cout << "n = " << n << ": crease distance " << worst << " (" << worst / (h * h) << " h^2), corner error "
+              << corner_error << " (" << corner_error / (h * h) << " h^2)\n";
+    EXPECT_LT(worst, 1.0 * h * h);
+    EXPECT_LT(corner_error, 2.0 * h * h);
+    EXPECT_LT(worst, previous_curve / 2.5) << "quadratic convergence: about 4x per halving";
+    previous_curve = worst;
+    previous_corner = corner_error;
+  }
+  (void)previous_corner;
+}
+
+TEST(BooleanIsosurface, UnstructuredMeshDriverMatchesGrid)
+{
+  // The grid's tetrahedra as an unstructured mesh, listed in reverse order
+  // and with some tetrahedra reversed: the surface is the same.
+  const Grid grid = unit_grid(11);
+  std::vector<Point> points;
+  for(std::size_t v = 0; v < grid.number_of_vertices(); ++v)
+    points.push_back(grid.point(v));
+  std::vector<std::array<std::size_t, 4>> tets;
+  const auto n = grid.vertex_counts();
+  for(std::size_t k = 0; k + 1 < n[2]; ++k)
+    for(std::size_t j = 0; j + 1 < n[1]; ++j)
+      for(std::size_t i = 0; i + 1 < n[0]; ++i)
+        for(int t = 0; t < 6; ++t)
+        {
+          auto tet = grid.tetrahedron(i, j, k, t);
+          if(tets.size() % 3 == 0)
+            std::swap(tet[0], tet[1]);
+          tets.push_back(tet);
+        }
+  std::reverse(tets.begin(), tets.end());
+  const BI::Tetrahedral_mesh_3<K> mesh(points, tets);
+  EXPECT_EQ(mesh.number_of_boundary_faces(), 6u * 2 * 10 * 10);
+  EXPECT_GT(mesh.number_of_reoriented_tetrahedra(), 0u);
+  const std::vector<Field> f{sphere(0.1, 0, 0, 0.7), plane(0, 0, 1, -0.125), sphere(-0.3, 0.2, 0.1, 0.4)};
+  const BI::Boolean_expression e = BI::Boolean_expression::parse("(f0 | !f2) & f1");
+  for(bool close : {false, true})
+  {
+    Soup from_grid, from_mesh;
+    BI::extract_boolean_isosurface(grid, BI::sample_fields(grid, f), e, from_grid,
+                                   BI::parameters::close_at_domain_boundary(close));
+    BI::extract_boolean_isosurface(mesh, BI::sample_fields(mesh, f), e, from_mesh,
+                                   BI::parameters::close_at_domain_boundary(close));
+    EXPECT_EQ(from_grid.points.size(), from_mesh.points.size());
+    // Coordinates come from the canonical key, so even the doubles agree.
+    EXPECT_EQ(polygon_positions(from_grid.points, from_grid.polygons),
+              polygon_positions(from_mesh.points, from_mesh.polygons));
+    if(close)
+      EXPECT_TRUE(is_closed_oriented_manifold(from_mesh));
+  }
+}
+
+TEST(BooleanIsosurface, NonConformingTetrahedralMeshIsRejected)
+{
+  const std::vector<Point> p{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(0, 0, -1),
+                             Point(1, 1, 1)};
+  // Three tetrahedra on the face (0, 1, 2).
+  EXPECT_THROW(BI::Tetrahedral_mesh_3<K>(p, {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}}), BI::Invalid_input_error);
+  EXPECT_THROW(BI::Tetrahedral_mesh_3<K>(p, {{0, 1, 2, 2}}), BI::Invalid_input_error);
+  EXPECT_THROW(BI::Tetrahedral_mesh_3<K>(p, {{0, 1, 2, 9}}), BI::Invalid_input_error);
+  EXPECT_THROW(BI::Tetrahedral_mesh_3<K>(p, {}), BI::Empty_input_error);
+}

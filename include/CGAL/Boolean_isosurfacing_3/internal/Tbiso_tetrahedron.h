@@ -618,61 +618,90 @@ private:
     }
     out.key.zero_fields = zero_fields;
 
-    // Coordinates, in double.
-    if(m == 2)
+    // Coordinates, in double, from the key alone (so that they do not depend
+    // on which tetrahedron met the vertex first): the carrier corners in
+    // increasing global index and the lowest vanishing fields that define the
+    // point, i.e. whose system with the carrier is regular.
+    std::sort(carrier_columns, carrier_columns + cm,
+              [&](int x, int y) { return corner[x].id < corner[y].id; });
+    int chosen[3];
+    if(!choose_defining_fields(carrier_columns, cm, zero_fields, chosen, 0, 0))
+      CGAL_assertion_msg(false, "a TBISO vertex is not defined by its vanishing fields");
+    if(cm == 2)
     {
-      // The seed's interpolation, from the endpoint with the lower global
-      // index so that every tetrahedron computes the same double.
-      int a = columns[0], b = columns[1];
-      if(corner[b].id < corner[a].id)
-        std::swap(a, b);
-      const int i = r.field[0];
-      const double fa = field_value(a, i), fb = field_value(b, i);
+      // The seed's interpolation t = -f_a / (f_b - f_a), from the lower index.
+      const int a = carrier_columns[0], b = carrier_columns[1];
+      const double fa = field_value(a, chosen[0]), fb = field_value(b, chosen[0]);
       const double t = -fa / (fb - fa);
       for(int x = 0; x < 3; ++x)
         out.point[x] = corner[a].position[x] + t * (corner[b].position[x] - corner[a].position[x]);
       return out;
     }
-    // Solve [F_S; 1] lambda = (0, .., 0, 1) by Gaussian elimination with partial pivoting.
+    // Solve [F; 1] lambda = (0, .., 0, 1) by Gauss-Jordan with partial pivoting.
     double A[4][5];
-    for(int row = 0; row + 1 < m; ++row)
+    for(int row = 0; row + 1 < cm; ++row)
     {
-      for(int k = 0; k < m; ++k)
-        A[row][k] = field_value(columns[k], r.field[row]);
-      A[row][m] = 0;
+      for(int k = 0; k < cm; ++k)
+        A[row][k] = field_value(carrier_columns[k], chosen[row]);
+      A[row][cm] = 0;
     }
-    for(int k = 0; k < m; ++k)
-      A[m - 1][k] = 1;
-    A[m - 1][m] = 1;
-    for(int col = 0; col < m; ++col)
+    for(int k = 0; k < cm; ++k)
+      A[cm - 1][k] = 1;
+    A[cm - 1][cm] = 1;
+    for(int col = 0; col < cm; ++col)
     {
       int pivot = col;
-      for(int row = col + 1; row < m; ++row)
+      for(int row = col + 1; row < cm; ++row)
         if(std::abs(A[row][col]) > std::abs(A[pivot][col]))
           pivot = row;
-      for(int k = 0; k <= m; ++k)
+      for(int k = 0; k <= cm; ++k)
         std::swap(A[col][k], A[pivot][k]);
-      for(int row = 0; row < m; ++row)
+      for(int row = 0; row < cm; ++row)
         if(row != col && A[col][col] != 0)
         {
           const double factor = A[row][col] / A[col][col];
-          for(int k = col; k <= m; ++k)
+          for(int k = col; k <= cm; ++k)
             A[row][k] -= factor * A[col][k];
         }
     }
     double lambda[4] = {0, 0, 0, 0};
     double total = 0;
-    for(int k = 0; k < m; ++k)
+    for(int k = 0; k < cm; ++k)
     {
-      // Barycentric coordinates are in [0, 1]; clamping only removes rounding.
-      lambda[k] = (carrier >> columns[k]) & 1 ? std::min(1., std::max(0., A[k][m] / A[k][k])) : 0.;
+      // The point is inside its carrier: clamping only removes rounding.
+      lambda[k] = std::min(1., std::max(0., A[k][cm] / A[k][k]));
       total += lambda[k];
     }
     out.point = {0, 0, 0};
-    for(int k = 0; k < m; ++k)
+    for(int k = 0; k < cm; ++k)
       for(int x = 0; x < 3; ++x)
-        out.point[x] += lambda[k] / total * corner[columns[k]].position[x];
+        out.point[x] += lambda[k] / total * corner[carrier_columns[k]].position[x];
     return out;
+  }
+
+  // The lexicographically first cm - 1 fields of `candidates` whose zero
+  // sets meet the carrier's affine hull in one point (exact test).
+  bool choose_defining_fields(const int* columns, int cm, std::uint64_t candidates, int* chosen, int depth,
+                              int from) const
+  {
+    if(depth == cm - 1)
+    {
+      double den[16];
+      for(int row = 0; row < depth; ++row)
+        for(int k = 0; k < cm; ++k)
+          den[row * cm + k] = field_value(columns[k], chosen[row]);
+      for(int k = 0; k < cm; ++k)
+        den[depth * cm + k] = 1.;
+      return exact_sign_of_determinant(den, cm) != 0;
+    }
+    for(int i = from; i < 64; ++i)
+      if((candidates >> i) & 1)
+      {
+        chosen[depth] = i;
+        if(choose_defining_fields(columns, cm, candidates, chosen, depth + 1, i + 1))
+          return true;
+      }
+    return false;
   }
 
   static std::size_t no_id() { return (std::numeric_limits<std::size_t>::max)(); }
