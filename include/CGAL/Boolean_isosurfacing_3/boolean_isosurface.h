@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -135,6 +136,120 @@ void weld_chunks(std::vector<Tbiso_chunk>& chunks, Boolean_isosurface_soup<Point
   }
 }
 
+
+// Evaluates the tetrahedra of cube layers [k_begin, k_end) of the grid into
+// `chunk`.  `values` holds the field values of the grid vertices from global
+// index `first_vertex` on; it must cover vertex layers k_begin - 1 .. k_end + 1
+// (clamped to the grid): the apex of a neighbouring tetrahedron across a face
+// can lie one layer beyond the cube layer.
+template <typename GeomTraits>
+void extract_grid_slab(const Tetrahedral_grid_3<GeomTraits>& grid, const double* values, std::size_t first_vertex,
+                       std::size_t N, const Tbiso_tetrahedron_evaluator& prototype, std::size_t k_begin,
+                       std::size_t k_end, Tbiso_chunk& chunk)
+{
+  typedef Tbiso_tetrahedron_evaluator Evaluator;
+  typedef Tetrahedral_grid_3<GeomTraits> Grid;
+  Evaluator evaluator = prototype;
+  const std::uint64_t expression_fields = evaluator.expression_fields();
+  const bool close = evaluator.closes_at_domain_boundary();
+  const std::array<std::size_t, 3>& n = grid.vertex_counts();
+  const std::size_t layer_size = n[0] * n[1];
+  auto values_at = [&](std::size_t v) { return values + (v - first_vertex) * N; };
+  // Sign masks of two vertex layers, rolled along z.
+  std::vector<std::uint64_t> negative[2], positive[2];
+  auto fill_masks = [&](std::size_t k, int slot) {
+    negative[slot].resize(layer_size);
+    positive[slot].resize(layer_size);
+    const double* layer = values_at(k * layer_size);
+    for(std::size_t v = 0; v < layer_size; ++v)
+      field_sign_masks(layer + v * N, expression_fields, negative[slot][v], positive[slot][v]);
+  };
+  fill_masks(k_begin, 0);
+  std::array<Tbiso_corner, 4> corner;
+  std::array<std::uint64_t, 4> tet_negative, tet_positive;
+  for(std::size_t k = k_begin; k < k_end; ++k)
+  {
+    const int lower = int((k - k_begin) & 1), upper = 1 - lower;
+    fill_masks(k + 1, upper);
+    for(std::size_t j = 0; j + 1 < n[1]; ++j)
+      for(std::size_t i = 0; i + 1 < n[0]; ++i)
+      {
+        // The 8 cube corners' masks; a cube whose corners all agree and have
+        // no zero is skipped whole (the common case).
+        std::uint64_t cube_negative[8], cube_positive[8];
+        bool uniform = true;
+        for(int c = 0; c < 8; ++c)
+        {
+          const std::size_t v = (i + (c & 1)) + n[0] * (j + ((c >> 1) & 1));
+          const int slot = (c >> 2) ? upper : lower;
+          cube_negative[c] = negative[slot][v];
+          cube_positive[c] = positive[slot][v];
+          uniform &= cube_negative[c] == cube_negative[0] && cube_positive[c] == cube_positive[0];
+        }
+        const bool on_boundary = i == 0 || j == 0 || k == 0 || i + 2 == n[0] || j + 2 == n[1] || k + 2 == n[2];
+        if(uniform && (cube_negative[0] | cube_positive[0]) == expression_fields &&
+           (!close || !on_boundary || !evaluator.evaluate(cube_negative[0], cube_positive[0])))
+          continue;
+        for(int t = 0; t < 6; ++t)
+        {
+          const std::array<std::array<int, 3>, 4> offsets = Grid::kuhn_offsets(t);
+          unsigned boundary_faces = 0;
+          for(int l = 0; l < 4; ++l)
+          {
+            const std::array<int, 3>& d = offsets[Grid::kuhn_corner(t, l)];
+            const int c = d[0] | (d[1] << 1) | (d[2] << 2);
+            tet_negative[l] = cube_negative[c];
+            tet_positive[l] = cube_positive[c];
+          }
+          if(close && on_boundary)
+            for(int l = 0; l < 4; ++l)
+              if(grid.neighbor_apex(i, j, k, t, l) == Grid::no_vertex)
+                boundary_faces |= 1u << l;
+          if(evaluator.is_trivially_empty(tet_negative, tet_positive, boundary_faces))
+            continue;
+          ++chunk.evaluated;
+          const typename Grid::Tetrahedron tet = grid.tetrahedron(i, j, k, t);
+          for(int l = 0; l < 4; ++l)
+          {
+            corner[l].id = tet[l];
+            corner[l].values = values_at(tet[l]);
+            corner[l].negative = tet_negative[l];
+            corner[l].positive = tet_positive[l];
+            corner[l].position = grid.position(tet[l]);
+          }
+          evaluator.evaluate_tetrahedron(
+              corner,
+              [&](int l) {
+                Evaluator::Apex a{false, 0, 0};
+                const std::size_t v = grid.neighbor_apex(i, j, k, t, l);
+                if(v != Grid::no_vertex)
+                {
+                  a.exists = true;
+                  field_sign_masks(values_at(v), expression_fields, a.negative, a.positive);
+                }
+                return a;
+              },
+              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count); });
+        }
+      }
+  }
+}
+
+// A key can be shared with another slab only if its carrier lies in a vertex
+// layer that bounds a slab (all its corners in that layer); returns that
+// layer, or no_layer.
+inline std::size_t shared_layer(const Tbiso_vertex_key& key, std::size_t layer_size, std::size_t slab)
+{
+  const std::size_t no_layer = (std::numeric_limits<std::size_t>::max)();
+  const std::size_t z = key.corners[0] / layer_size;
+  if(z % slab != 0)
+    return no_layer;
+  for(int c = 1; c < 4 && key.corners[c] != (std::numeric_limits<std::size_t>::max)(); ++c)
+    if(key.corners[c] / layer_size != z)
+      return no_layer;
+  return z;
+}
+
 } // namespace internal
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
@@ -199,7 +314,6 @@ extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Sca
   stats.number_of_tetrahedra = grid.number_of_tetrahedra();
   auto start = std::chrono::steady_clock::now();
   const Evaluator prototype(expression, fields.number_of_fields(), close);
-  const std::uint64_t expression_fields = prototype.expression_fields();
   stats.table_seconds = internal::seconds_since(start);
 
   const std::array<std::size_t, 3>& n = grid.vertex_counts();
@@ -217,87 +331,8 @@ extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Sca
   internal::concurrent_for<ConcurrencyTag>(
       number_of_slabs,
       [&](std::size_t s) {
-        internal::Tbiso_chunk& chunk = chunks[s];
-        Evaluator evaluator = prototype;
-        const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
-        // Sign masks of two vertex layers, rolled along z.
-        std::vector<std::uint64_t> negative[2], positive[2];
-        auto fill_masks = [&](std::size_t k, int slot) {
-          negative[slot].resize(layer_size);
-          positive[slot].resize(layer_size);
-          const double* layer = values + k * layer_size * N;
-          for(std::size_t v = 0; v < layer_size; ++v)
-            internal::field_sign_masks(layer + v * N, expression_fields, negative[slot][v], positive[slot][v]);
-        };
-        fill_masks(k_begin, 0);
-        std::array<internal::Tbiso_corner, 4> corner;
-        std::array<std::uint64_t, 4> tet_negative, tet_positive;
-        for(std::size_t k = k_begin; k < k_end; ++k)
-        {
-          const int lower = int((k - k_begin) & 1), upper = 1 - lower;
-          fill_masks(k + 1, upper);
-          for(std::size_t j = 0; j + 1 < n[1]; ++j)
-            for(std::size_t i = 0; i + 1 < n[0]; ++i)
-            {
-              // The 8 cube corners' masks; a cube whose corners all agree and
-              // have no zero is skipped whole (the common case).
-              std::uint64_t cube_negative[8], cube_positive[8];
-              bool uniform = true;
-              for(int c = 0; c < 8; ++c)
-              {
-                const std::size_t v = (i + (c & 1)) + n[0] * (j + ((c >> 1) & 1));
-                const int slot = (c >> 2) ? upper : lower;
-                cube_negative[c] = negative[slot][v];
-                cube_positive[c] = positive[slot][v];
-                uniform &= cube_negative[c] == cube_negative[0] && cube_positive[c] == cube_positive[0];
-              }
-              const bool on_boundary = i == 0 || j == 0 || k == 0 || i + 2 == n[0] || j + 2 == n[1] || k + 2 == n[2];
-              if(uniform && (cube_negative[0] | cube_positive[0]) == expression_fields &&
-                 (!close || !on_boundary || !evaluator.evaluate(cube_negative[0], cube_positive[0])))
-                continue;
-              for(int t = 0; t < 6; ++t)
-              {
-                const std::array<std::array<int, 3>, 4> offsets = Tetrahedral_grid_3<GeomTraits>::kuhn_offsets(t);
-                unsigned boundary_faces = 0;
-                for(int l = 0; l < 4; ++l)
-                {
-                  const std::array<int, 3>& d = offsets[Tetrahedral_grid_3<GeomTraits>::kuhn_corner(t, l)];
-                  const int c = d[0] | (d[1] << 1) | (d[2] << 2);
-                  tet_negative[l] = cube_negative[c];
-                  tet_positive[l] = cube_positive[c];
-                }
-                if(close && on_boundary)
-                  for(int l = 0; l < 4; ++l)
-                    if(grid.neighbor_apex(i, j, k, t, l) == Tetrahedral_grid_3<GeomTraits>::no_vertex)
-                      boundary_faces |= 1u << l;
-                if(evaluator.is_trivially_empty(tet_negative, tet_positive, boundary_faces))
-                  continue;
-                ++chunk.evaluated;
-                const typename Tetrahedral_grid_3<GeomTraits>::Tetrahedron tet = grid.tetrahedron(i, j, k, t);
-                for(int l = 0; l < 4; ++l)
-                {
-                  corner[l].id = tet[l];
-                  corner[l].values = values + tet[l] * N;
-                  corner[l].negative = tet_negative[l];
-                  corner[l].positive = tet_positive[l];
-                  corner[l].position = grid.position(tet[l]);
-                }
-                evaluator.evaluate_tetrahedron(
-                    corner,
-                    [&](int l) {
-                      Evaluator::Apex a{false, 0, 0};
-                      const std::size_t v = grid.neighbor_apex(i, j, k, t, l);
-                      if(v != Tetrahedral_grid_3<GeomTraits>::no_vertex)
-                      {
-                        a.exists = true;
-                        internal::field_sign_masks(values + v * N, expression_fields, a.negative, a.positive);
-                      }
-                      return a;
-                    },
-                    [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count); });
-              }
-            }
-        }
+        internal::extract_grid_slab(grid, values, 0, N, prototype, s * slab, std::min(layers, (s + 1) * slab),
+                                    chunks[s]);
       },
       internal::Progress(progress_callback));
   stats.extraction_seconds = internal::seconds_since(start);
@@ -308,13 +343,7 @@ extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Sca
   // A vertex can be shared by two slabs only if it lies in a vertex layer
   // that bounds a slab: all its carrier corners are in that layer.
   internal::weld_chunks(chunks, out, [&](const internal::Tbiso_vertex_key& key) {
-    const std::size_t z = key.corners[0] / layer_size;
-    if(z % slab != 0)
-      return false;
-    for(int c = 1; c < 4 && key.corners[c] != Tetrahedral_grid_3<GeomTraits>::no_vertex; ++c)
-      if(key.corners[c] / layer_size != z)
-        return false;
-    return true;
+    return internal::shared_layer(key, layer_size, slab) != (std::numeric_limits<std::size_t>::max)();
   });
   stats.welding_seconds = internal::seconds_since(start);
   stats.number_of_vertices = out.points.size();

@@ -142,6 +142,8 @@ public:
   /// The fields the expression depends on: the only ones that cut, weld or label.
   std::uint64_t expression_fields() const { return m_fields; }
 
+  bool closes_at_domain_boundary() const { return m_close; }
+
   /// Value of the expression for a cell where the fields of `negative` are
   /// < 0 and those of `positive` are > 0 (the others vanish on the whole cell,
   /// which satisfies neither literal).

@@ -1,0 +1,237 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_BY_SLABS_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_BY_SLABS_H
+
+// Out-of-core TBISO on a regular grid: the fields are read slab by slab of
+// cube layers along z, and the output is handed to a sink as soon as a slab
+// is welded.  Peak memory is a few slabs of field values plus the keys of one
+// vertex layer, whatever the number of slabs.
+//
+// Welding across slabs: a vertex can be shared by two slabs only if its
+// carrier simplex lies in the vertex layer between them (its key says so:
+// all carrier corners in that layer).  Slabs are welded in order, so the keys
+// of one layer are all that must be remembered, and the vertex numbering is
+// the order of first appearance -- the same as the in-core
+// `extract_boolean_isosurface()` with the same `slab_layers`, for both
+// concurrency tags.
+
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+
+/// \ingroup PkgBooleanIsosurfacing3Concepts
+/// Concept `ScalarFieldSource`: `std::size_t number_of_fields()`, and
+/// `void read(std::size_t first_vertex, std::size_t count, std::vector<double>& values)`
+/// writing the values of vertices `[first_vertex, first_vertex + count)`,
+/// vertex-major.  Models: `IO::Raw_scalar_field_reader`, `Scalar_fields_source`.
+///
+/// Concept `BooleanIsosurfaceSink`: `void add_point(const std::array<double, 3>&)`
+/// and `void add_polygon(const std::size_t* vertices, std::size_t n, int field)`;
+/// points are numbered from 0 in the order they are added.  Models:
+/// `Boolean_isosurface_soup_sink`, `IO::Boolean_isosurface_PLY_stream`.
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// A `ScalarFieldSource` over fields already in memory.
+class Scalar_fields_source
+{
+public:
+  explicit Scalar_fields_source(const Scalar_fields& fields) : m_fields(fields) {}
+  std::size_t number_of_fields() const { return m_fields.number_of_fields(); }
+  void read(std::size_t first, std::size_t count, std::vector<double>& values) const
+  {
+    const std::size_t N = m_fields.number_of_fields();
+    values.assign(m_fields.data().begin() + first * N, m_fields.data().begin() + (first + count) * N);
+  }
+
+private:
+  const Scalar_fields& m_fields;
+};
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// A `BooleanIsosurfaceSink` appending to a `Boolean_isosurface_soup`.
+template <typename Point_3>
+class Boolean_isosurface_soup_sink
+{
+public:
+  explicit Boolean_isosurface_soup_sink(Boolean_isosurface_soup<Point_3>& soup) : m_soup(soup) { m_soup.clear(); }
+  void add_point(const std::array<double, 3>& p) { m_soup.points.push_back(Point_3(p[0], p[1], p[2])); }
+  void add_polygon(const std::size_t* v, std::size_t n, int field)
+  {
+    m_soup.polygons.emplace_back(v, v + n);
+    m_soup.face_fields.push_back(field);
+  }
+
+private:
+  Boolean_isosurface_soup<Point_3>& m_soup;
+};
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// Statistics of `extract_boolean_isosurface_by_slabs()`.
+struct Boolean_isosurface_slab_statistics : Boolean_isosurface_statistics
+{
+  std::size_t number_of_slabs = 0;
+  /// Time spent reading field values (all slabs, summed over threads).
+  double reading_seconds = 0;
+  /// Largest number of field values held at once (all slabs in flight).
+  std::size_t peak_field_values = 0;
+};
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// TBISO on a regular grid whose fields are read from `source` one slab of
+/// `slab_layers` cube layers at a time (plus one ghost vertex layer on each
+/// side: the apex of a neighbouring tetrahedron may lie there).  Under
+/// `Parallel_tag` up to `slabs_in_flight` slabs (default: twice the number of
+/// hardware threads) are read and evaluated at once; they are welded and
+/// passed to `sink` in slab order, so the output does not depend on the tag.
+///
+/// Named parameters: `slab_layers` (default 8), `close_at_domain_boundary`,
+/// `progress` (fraction of slabs done), and
+/// `CGAL::parameters::number_of_iterations` is *not* used.
+///
+/// \throws Invalid_input_error if the source does not have the fields the
+/// expression names; Non_finite_value_error on a NaN or infinite value
+/// (checked slab by slab, naming the global vertex).
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename FieldSource,
+          typename Sink, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Boolean_isosurface_slab_statistics
+extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource& source,
+                                    const Boolean_expression& expression, Sink& sink,
+                                    const NamedParameters& np = CGAL::parameters::default_values(),
+                                    std::size_t slabs_in_flight = 0)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef internal::Tbiso_tetrahedron_evaluator Evaluator;
+
+  const std::size_t N = source.number_of_fields();
+  if(expression.number_of_variables() > N)
+    throw Invalid_input_error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
+                              " but there are only " + std::to_string(N) + " fields");
+  const bool close = choose_parameter(get_parameter(np, internal_np::close_at_domain_boundary), false);
+  const std::function<void(double)> progress =
+      choose_parameter(get_parameter(np, internal_np::progress), std::function<void(double)>());
+  const std::size_t slab =
+      std::max<std::size_t>(1, choose_parameter(get_parameter(np, internal_np::slab_layers), std::size_t(8)));
+
+  Boolean_isosurface_slab_statistics stats;
+  stats.number_of_tetrahedra = grid.number_of_tetrahedra();
+  auto start = std::chrono::steady_clock::now();
+  const Evaluator prototype(expression, N, close);
+  stats.table_seconds = internal::seconds_since(start);
+
+  const std::array<std::size_t, 3>& n = grid.vertex_counts();
+  const std::size_t layers = n[2] - 1, layer_size = n[0] * n[1];
+  const std::size_t number_of_slabs = (layers + slab - 1) / slab;
+  stats.number_of_slabs = number_of_slabs;
+  if(slabs_in_flight == 0)
+    slabs_in_flight = internal::is_parallel_tag<ConcurrencyTag>()
+                          ? 2 * std::max<std::size_t>(1, std::thread::hardware_concurrency())
+                          : 1;
+
+  std::mutex source_mutex;
+  std::unordered_map<internal::Tbiso_vertex_key, std::size_t, internal::Tbiso_vertex_key_hash> below, above;
+  std::size_t next_index = 0;
+  std::vector<std::size_t> to_global, polygon;
+  for(std::size_t w0 = 0; w0 < number_of_slabs; w0 += slabs_in_flight)
+  {
+    const std::size_t w1 = std::min(number_of_slabs, w0 + slabs_in_flight);
+    std::vector<internal::Tbiso_chunk> chunks(w1 - w0);
+    std::vector<double> read_seconds(w1 - w0, 0.);
+    std::vector<std::size_t> held(w1 - w0, 0);
+    start = std::chrono::steady_clock::now();
+    internal::concurrent_for<ConcurrencyTag>(w1 - w0, [&](std::size_t t) {
+      const std::size_t s = w0 + t;
+      const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+      const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
+      const std::size_t last_layer = std::min(n[2] - 1, k_end + 1);
+      std::vector<double> values;
+      const auto read_start = std::chrono::steady_clock::now();
+      {
+        std::lock_guard<std::mutex> lock(source_mutex);
+        source.read(first_layer * layer_size, (last_layer - first_layer + 1) * layer_size, values);
+      }
+      read_seconds[t] = internal::seconds_since(read_start);
+      held[t] = values.size();
+      for(std::size_t k = 0; k < values.size(); ++k)
+        if(!std::isfinite(values[k]))
+          throw Non_finite_value_error("field " + std::to_string(k % N) + " has a non-finite value at vertex " +
+                                       std::to_string(first_layer * layer_size + k / N));
+      internal::extract_grid_slab(grid, values.data(), first_layer * layer_size, N, prototype, k_begin, k_end,
+                                  chunks[t]);
+    });
+    stats.extraction_seconds += internal::seconds_since(start);
+    for(std::size_t t = 0; t < w1 - w0; ++t)
+    {
+      stats.reading_seconds += read_seconds[t];
+      stats.number_of_evaluated_tetrahedra += chunks[t].evaluated;
+    }
+    std::size_t in_flight = 0;
+    for(std::size_t h : held)
+      in_flight += h;
+    stats.peak_field_values = std::max(stats.peak_field_values, in_flight);
+
+    // Weld and emit, in slab order.
+    start = std::chrono::steady_clock::now();
+    for(std::size_t t = 0; t < w1 - w0; ++t)
+    {
+      const std::size_t s = w0 + t;
+      const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+      internal::Tbiso_chunk& chunk = chunks[t];
+      chunk.index.clear();
+      above.clear();
+      to_global.resize(chunk.keys.size());
+      for(std::size_t v = 0; v < chunk.keys.size(); ++v)
+      {
+        const std::size_t z = internal::shared_layer(chunk.keys[v], layer_size, slab);
+        if(z == k_begin && s > 0)
+        {
+          auto found = below.find(chunk.keys[v]);
+          if(found != below.end())
+          {
+            to_global[v] = found->second;
+            continue;
+          }
+        }
+        to_global[v] = next_index++;
+        sink.add_point(chunk.points[v]);
+        if(z == k_end)
+          above.emplace(chunk.keys[v], to_global[v]);
+      }
+      for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
+      {
+        polygon.clear();
+        for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
+          polygon.push_back(to_global[chunk.polygon_vertices[k]]);
+        sink.add_polygon(polygon.data(), polygon.size(), chunk.labels[p]);
+        ++stats.number_of_polygons;
+      }
+      below.swap(above);
+      chunk = internal::Tbiso_chunk();
+    }
+    stats.welding_seconds += internal::seconds_since(start);
+    if(progress)
+      progress(double(w1) / double(number_of_slabs));
+  }
+  stats.number_of_vertices = next_index;
+  return stats;
+}
+
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_BY_SLABS_H
