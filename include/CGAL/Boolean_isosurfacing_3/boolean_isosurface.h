@@ -155,8 +155,10 @@ void extract_grid_slab(const Tetrahedral_grid_3<GeomTraits>& grid, const double*
   const std::array<std::size_t, 3>& n = grid.vertex_counts();
   const std::size_t layer_size = n[0] * n[1];
   auto values_at = [&](std::size_t v) { return values + (v - first_vertex) * N; };
-  // Sign masks of two vertex layers, rolled along z.
-  std::vector<std::uint64_t> negative[2], positive[2];
+  // Sign masks of two vertex layers, rolled along z.  Kept per thread from
+  // one slab to the next: first-touching fresh pages is slow, and page
+  // faults of concurrent threads serialize in the kernel.
+  thread_local std::vector<std::uint64_t> negative[2], positive[2];
   auto fill_masks = [&](std::size_t k, int slot) {
     negative[slot].resize(layer_size);
     positive[slot].resize(layer_size);
