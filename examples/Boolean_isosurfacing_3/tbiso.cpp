@@ -1,0 +1,832 @@
+// tbiso: the boundary of a Boolean combination of scalar fields sampled on a
+// tetrahedral domain, with its crease polylines and corners (TBISO: Taubin &
+// Sibley, "Extracting Boolean isosurfaces from tetrahedral meshes").
+//
+//   tbiso (--grid N | --mesh FILE) (--fields FILE | --field SPEC ...) [--expr TEXT]
+//         [--close] [--smooth [ITER]] [-o out.ply|out.off] [--creases F] [--corners F]
+//   tbiso --demo DIR
+//
+// The literal fi of the expression is the region f_i < 0.  Prints the domain,
+// the fields, the canonical expression, the time of every stage, the output
+// sizes and, for a closed surface, the enclosed volume.  Any error is one line
+// `tbiso: error: ...` on stderr and exit status 1.
+
+#include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/boolean_isosurface_files.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/scalar_fields.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/tetrahedral_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_to_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/crease_preserving_smoothing.h>
+#include <CGAL/Boolean_isosurfacing_3/extract_crease_network.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/blocked_range.h>
+#  include <tbb/global_control.h>
+#  include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+#include <utility>
+#include <vector>
+
+namespace {
+
+namespace BI = CGAL::Boolean_isosurfacing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef BI::Tetrahedral_grid_3<K> Grid;
+typedef BI::Tetrahedral_mesh_3<K> Tet_mesh;
+typedef BI::Boolean_isosurface_soup<Point> Soup;
+typedef CGAL::Surface_mesh<Point> Surface_mesh;
+typedef std::function<double(const Point&)> Field;
+
+const char* usage_text =
+    "usage: tbiso (--grid N | --grid NX,NY,NZ [--box XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX] | --mesh FILE)\n"
+    "             (--fields FILE [--field-count N] | --field SPEC [--field SPEC ...])\n"
+    "             [--expr TEXT] [--close] [--smooth [ITER] [--lambda L] [--mu M]]\n"
+    "             [-o OUT.ply|OUT.off] [--creases FILE] [--corners FILE] [--sequential] [--threads N]\n"
+    "       tbiso --demo DIR\n"
+    "\n"
+    "The boundary of the regularized Boolean set EXPR(f0, f1, ...) where the literal fi is\n"
+    "the region f_i < 0, for scalar fields sampled at the vertices of a tetrahedral domain\n"
+    "(TBISO), with its crease polylines and corners.\n"
+    "\n"
+    "domain:\n"
+    "  --grid N | NX,NY,NZ   regular grid of N^3 (NX*NY*NZ) vertices, 6 tetrahedra per cube\n"
+    "  --box X0,Y0,Z0,X1,Y1,Z1  extent of the grid (default -1,-1,-1,1,1,1)\n"
+    "  --mesh FILE           tetrahedral mesh: Medit .mesh or TetGen .node/.ele\n"
+    "fields (one of):\n"
+    "  --fields FILE         values at the domain vertices: .f64/.raw (float64) or .f32 raw\n"
+    "                        binary, vertex-major (needs --field-count N); any other: text\n"
+    "  --field SPEC          an analytic field, repeatable (f0, f1, ... in order):\n"
+    "                          sphere:CX,CY,CZ,R          |p - c| - R\n"
+    "                          plane:A,B,C,D              A x + B y + C z + D\n"
+    "                          box:X0,Y0,Z0,X1,Y1,Z1      signed distance to the box\n"
+    "                          cylinder:AXIS,C1,C2,R      infinite cylinder, AXIS x|y|z,\n"
+    "                                                     (C1,C2) its centre in the other axes\n"
+    "                          torus:R,r                  torus around the z axis at the origin\n"
+    "                          distance:MESHFILE          signed distance to a closed triangle\n"
+    "                                                     mesh (OFF/OBJ/PLY/STL), negative inside\n"
+    "expression:\n"
+    "  --expr TEXT           e.g. \"f0 & !f1 | f2\" (default f0 for one field)\n"
+    "  --close               close the set on the boundary of the domain\n"
+    "smoothing:\n"
+    "  --smooth [ITER]       Taubin lambda|mu smoothing keeping creases and corners\n"
+    "                        (default 10 iterations); the surface must be manifold\n"
+    "  --lambda L, --mu M    smoothing factors (default 0.6307, -0.6732)\n"
+    "output:\n"
+    "  -o FILE               the surface: .ply (with field labels and colours) or .off\n"
+    "  --creases FILE        crease polylines (CGAL polylines text format)\n"
+    "  --corners FILE        corners, one 'x y z' line each\n"
+    "other:\n"
+    "  --sequential          run on one thread (default: parallel when built with TBB)\n"
+    "  --threads N           use at most N threads\n"
+    "  --demo DIR            four spheres on a 128^3 grid, 'at least two of four';\n"
+    "                        writes DIR/tbiso_demo.ply, DIR/tbiso_demo_creases.polylines.txt,\n"
+    "                        DIR/tbiso_demo_corners.xyz\n"
+    "  -h, --help            this text\n";
+
+// Every error the user can cause: reported on one line, exit status 1.
+class Error : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Options
+{
+  std::optional<std::array<std::size_t, 3>> grid;
+  std::optional<std::array<double, 6>> box;
+  std::string mesh_file, fields_file;
+  std::size_t field_count = 0;
+  std::vector<std::string> field_specs;
+  std::optional<std::string> expression;
+  bool close = false;
+  bool parallel = true;
+  std::size_t threads = 0;
+  std::optional<long long> smooth_iterations;
+  std::optional<double> lambda, mu;
+  std::string output, creases_file, corners_file, demo_dir;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// ---- argument parsing ------------------------------------------------------
+
+double parse_double(const std::string& text, const std::string& what)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if(text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
+    throw Error(what + ": '" + text + "' is not a finite number");
+  return v;
+}
+
+std::size_t parse_count(const std::string& text, const std::string& what)
+{
+  if(text.empty() || text.size() > 12 || !std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit((unsigned char)c); }))
+    throw Error(what + ": '" + text + "' is not a whole number");
+  return std::size_t(std::stoull(text));
+}
+
+std::vector<std::string> split(const std::string& text, char separator)
+{
+  std::vector<std::string> parts(1);
+  for(char c : text)
+    if(c == separator)
+      parts.emplace_back();
+    else
+      parts.back() += c;
+  return parts;
+}
+
+std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& what)
+{
+  const std::vector<std::string> parts = split(text, ',');
+  if(parts.size() != count)
+    throw Error(what + ": expected " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+  std::vector<double> values;
+  for(const std::string& p : parts)
+    values.push_back(parse_double(p, what));
+  return values;
+}
+
+bool has_extension(const std::string& file, const std::string& extension)
+{
+  if(file.size() < extension.size())
+    return false;
+  for(std::size_t k = 0; k < extension.size(); ++k)
+    if(std::tolower((unsigned char)file[file.size() - extension.size() + k]) != extension[k])
+      return false;
+  return true;
+}
+
+// Returns false for --help.
+bool parse_arguments(int argc, char** argv, Options& o)
+{
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc)
+        throw Error(arg + " needs a value (see tbiso --help)");
+      return argv[++i];
+    };
+    if(arg == "-h" || arg == "--help")
+      return false;
+    else if(arg == "--grid")
+    {
+      const std::string text = value();
+      const std::vector<std::string> parts = split(text, ',');
+      if(parts.size() != 1 && parts.size() != 3)
+        throw Error("--grid: expected N or NX,NY,NZ, got '" + text + "'");
+      std::array<std::size_t, 3> n;
+      for(int a = 0; a < 3; ++a)
+      {
+        n[a] = parse_count(parts[parts.size() == 1 ? 0 : a], "--grid");
+        if(n[a] < 2)
+          throw Error("--grid: at least 2 vertices per axis are needed, got " + std::to_string(n[a]));
+      }
+      o.grid = n;
+    }
+    else if(arg == "--box")
+    {
+      const std::vector<double> b = parse_numbers(value(), 6, "--box");
+      for(int a = 0; a < 3; ++a)
+        if(!(b[a] < b[a + 3]))
+          throw Error("--box: the minimum must be below the maximum on every axis");
+      o.box = std::array<double, 6>{b[0], b[1], b[2], b[3], b[4], b[5]};
+    }
+    else if(arg == "--mesh")
+      o.mesh_file = value();
+    else if(arg == "--fields")
+      o.fields_file = value();
+    else if(arg == "--field-count")
+    {
+      o.field_count = parse_count(value(), "--field-count");
+      if(o.field_count == 0)
+        throw Error("--field-count: at least one field is needed");
+    }
+    else if(arg == "--field")
+      o.field_specs.push_back(value());
+    else if(arg == "--expr")
+      o.expression = value();
+    else if(arg == "--close")
+      o.close = true;
+    else if(arg == "--sequential")
+      o.parallel = false;
+    else if(arg == "--threads")
+    {
+      const std::string text = value();
+      o.threads = parse_count(text, "--threads");
+      if(o.threads < 1)
+        throw Error("--threads: at least 1 thread is needed, got " + text);
+    }
+    else if(arg == "--smooth")
+    {
+      // ITER is optional: a following word that is not an option is it.
+      o.smooth_iterations = BI::taubin_default_number_of_iterations;
+      if(i + 1 < argc && argv[i + 1][0] != '-')
+        o.smooth_iterations = (long long)parse_count(argv[++i], "--smooth");
+    }
+    else if(arg == "--lambda")
+      o.lambda = parse_double(value(), "--lambda");
+    else if(arg == "--mu")
+      o.mu = parse_double(value(), "--mu");
+    else if(arg == "-o" || arg == "--output")
+    {
+      o.output = value();
+      if(!has_extension(o.output, ".ply") && !has_extension(o.output, ".off"))
+        throw Error("-o: unknown output extension in '" + o.output + "' (use .ply or .off)");
+    }
+    else if(arg == "--creases")
+      o.creases_file = value();
+    else if(arg == "--corners")
+      o.corners_file = value();
+    else if(arg == "--demo")
+      o.demo_dir = value();
+    else
+      throw Error("unknown option '" + arg + "' (see tbiso --help)");
+  }
+  if((o.lambda || o.mu) && !o.smooth_iterations)
+    throw Error("--lambda and --mu need --smooth");
+  return true;
+}
+
+// ---- analytic fields ---------------------------------------------------------
+
+// Signed distance to a closed triangle mesh: an AABB tree for the distance,
+// ray parity (exact predicates) for the sign, so that points on the surface
+// get exactly 0.  The tree is built before any query, so concurrent queries
+// are safe.
+class Signed_distance_to_mesh
+{
+  typedef CGAL::Side_of_triangle_mesh<Surface_mesh, K> Side;
+  typedef Side::AABB_tree Tree;
+
+public:
+  explicit Signed_distance_to_mesh(const std::string& path)
+  {
+    try
+    {
+      BI::IO::read_closed_triangle_mesh(path, m_mesh);
+    }
+    catch(const BI::Invalid_input_error& e)
+    {
+      throw Error("--field distance:" + path + ": " + e.what());
+    }
+    m_tree = std::make_unique<Tree>(faces(m_mesh).first, faces(m_mesh).second, m_mesh);
+    m_tree->build();
+    m_tree->accelerate_distance_queries();
+    m_side = std::make_unique<Side>(*m_tree);
+  }
+
+  double operator()(const Point& p) const
+  {
+    const CGAL::Bounded_side side = (*m_side)(p);
+    if(side == CGAL::ON_BOUNDARY)
+      return 0;
+    const double d = std::sqrt(CGAL::to_double(m_tree->squared_distance(p)));
+    return side == CGAL::ON_BOUNDED_SIDE ? -d : d;
+  }
+
+  std::size_t number_of_faces() const { return m_mesh.number_of_faces(); }
+
+private:
+  Surface_mesh m_mesh;
+  std::unique_ptr<Tree> m_tree;
+  std::unique_ptr<Side> m_side;
+};
+
+Field make_field(const std::string& spec)
+{
+  const std::size_t colon = spec.find(':');
+  if(colon == std::string::npos)
+    throw Error("--field '" + spec + "': expected KIND:PARAMETERS (see tbiso --help)");
+  const std::string kind = spec.substr(0, colon), rest = spec.substr(colon + 1);
+  const std::string what = "--field " + spec;
+  if(kind == "sphere")
+  {
+    const std::vector<double> v = parse_numbers(rest, 4, what);
+    if(!(v[3] > 0))
+      throw Error(what + ": the radius must be positive");
+    const double cx = v[0], cy = v[1], cz = v[2], r = v[3];
+    return [=](const Point& p) {
+      const double x = p.x() - cx, y = p.y() - cy, z = p.z() - cz;
+      return std::sqrt(x * x + y * y + z * z) - r;
+    };
+  }
+  if(kind == "plane")
+  {
+    const std::vector<double> v = parse_numbers(rest, 4, what);
+    if(v[0] == 0 && v[1] == 0 && v[2] == 0)
+      throw Error(what + ": the normal (A,B,C) is zero");
+    const double a = v[0], b = v[1], c = v[2], d = v[3];
+    return [=](const Point& p) { return a * p.x() + b * p.y() + c * p.z() + d; };
+  }
+  if(kind == "box")
+  {
+    const std::vector<double> v = parse_numbers(rest, 6, what);
+    for(int a = 0; a < 3; ++a)
+      if(!(v[a] < v[a + 3]))
+        throw Error(what + ": the minimum must be below the maximum on every axis");
+    const std::array<double, 3> lo{v[0], v[1], v[2]}, hi{v[3], v[4], v[5]};
+    // Exact distance: Euclidean outside, to the nearest face inside.  Each
+    // coordinate offset is a difference with a box bound, so a point on a
+    // face plane gets exactly 0 there.
+    return [=](const Point& p) {
+      const double x[3] = {p.x(), p.y(), p.z()};
+      double outside = 0, inside = -std::numeric_limits<double>::infinity();
+      for(int a = 0; a < 3; ++a)
+      {
+        const double q = std::max(lo[a] - x[a], x[a] - hi[a]);
+        inside = std::max(inside, q);
+        if(q > 0)
+          outside += q * q;
+      }
+      return outside > 0 ? std::sqrt(outside) : inside;
+    };
+  }
+  if(kind == "cylinder")
+  {
+    const std::vector<std::string> parts = split(rest, ',');
+    if(parts.size() != 4 || parts[0].size() != 1 || std::string("xyz").find(parts[0][0]) == std::string::npos)
+      throw Error(what + ": expected cylinder:AXIS,C1,C2,R with AXIS x, y or z");
+    const int axis = int(parts[0][0] - 'x');
+    const double c1 = parse_double(parts[1], what), c2 = parse_double(parts[2], what), r = parse_double(parts[3], what);
+    if(!(r > 0))
+      throw Error(what + ": the radius must be positive");
+    return [=](const Point& p) {
+      const double x[3] = {p.x(), p.y(), p.z()};
+      // The other two axes in increasing order: x -> (y, z), y -> (x, z), z -> (x, y).
+      const double u = x[axis == 0 ? 1 : 0] - c1, w = x[axis == 2 ? 1 : 2] - c2;
+      return std::sqrt(u * u + w * w) - r;
+    };
+  }
+  if(kind == "torus")
+  {
+    const std::vector<double> v = parse_numbers(rest, 2, what);
+    if(!(v[1] > 0) || !(v[0] >= 0))
+      throw Error(what + ": expected R >= 0 and r > 0");
+    const double R = v[0], r = v[1];
+    return [=](const Point& p) {
+      const double q = std::sqrt(p.x() * p.x() + p.y() * p.y()) - R;
+      return std::sqrt(q * q + p.z() * p.z()) - r;
+    };
+  }
+  if(kind == "distance")
+  {
+    if(rest.empty())
+      throw Error(what + ": expected distance:MESHFILE");
+    const std::shared_ptr<const Signed_distance_to_mesh> distance = std::make_shared<Signed_distance_to_mesh>(rest);
+    return [distance](const Point& p) { return (*distance)(p); };
+  }
+  throw Error("--field '" + spec + "': unknown kind '" + kind + "' (sphere, plane, box, cylinder, torus, distance)");
+}
+
+// ---- the run ---------------------------------------------------------------
+
+// A progress bar on stderr, only for runs that last and only on a terminal.
+class Progress_bar
+{
+public:
+  void operator()(double fraction) const
+  {
+    const double seconds = seconds_since(m_start);
+    if(seconds < 1.0 || !isatty(2))
+      return;
+    const int width = 40, done = int(fraction * width + 0.5);
+    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(done, '#').c_str(), std::string(width - done, ' ').c_str(),
+                 int(fraction * 100 + 0.5));
+    if(fraction >= 1.0)
+      std::fprintf(stderr, "\r%*s\r", width + 8, "");
+  }
+
+private:
+  std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
+// Field i at vertex v is fields[i](point_at(v)); every vertex writes its own
+// values, so the parallel loop gives the sequential result.
+template <typename PointAt>
+BI::Scalar_fields sample(std::size_t number_of_vertices, const std::vector<Field>& functions,
+                         const PointAt& point_at, bool parallel)
+{
+  BI::Scalar_fields fields(number_of_vertices, functions.size());
+  const std::size_t n = functions.size();
+  double* values = fields.data().data();
+  const auto body = [&](std::size_t begin, std::size_t end) {
+    for(std::size_t v = begin; v < end; ++v)
+    {
+      const Point p = point_at(v);
+      for(std::size_t i = 0; i < n; ++i)
+        values[v * n + i] = functions[i](p);
+    }
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel)
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, number_of_vertices, 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
+  else
+#endif
+    body(0, number_of_vertices);
+  (void)parallel;
+  return fields;
+}
+
+template <typename Domain>
+BI::Boolean_isosurface_statistics extract(const Domain& domain, const BI::Scalar_fields& fields,
+                                          const BI::Boolean_expression& expression, Soup& soup, const Options& o)
+{
+  const auto np = BI::parameters::close_at_domain_boundary(o.close, BI::parameters::progress(Progress_bar()));
+  if(o.parallel)
+    return BI::extract_boolean_isosurface<CGAL::Parallel_if_available_tag>(domain, fields, expression, soup, np);
+  return BI::extract_boolean_isosurface<CGAL::Sequential_tag>(domain, fields, expression, soup, np);
+}
+
+// Closed: every directed edge is matched by exactly one reverse edge (so
+// each undirected edge is in exactly two consistently oriented polygons).
+struct Edge_report
+{
+  std::size_t border = 0, non_manifold = 0, inconsistent = 0;
+  bool closed() const { return border == 0 && non_manifold == 0 && inconsistent == 0; }
+};
+
+Edge_report check_edges(const Soup& soup)
+{
+  struct Use
+  {
+    std::size_t a, b;
+    bool forward;
+    bool operator<(const Use& u) const { return a != u.a ? a < u.a : (b != u.b ? b < u.b : forward < u.forward); }
+  };
+  std::vector<Use> uses;
+  for(const std::vector<std::size_t>& poly : soup.polygons)
+    for(std::size_t k = 0; k < poly.size(); ++k)
+    {
+      const std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
+      uses.push_back(a < b ? Use{a, b, true} : Use{b, a, false});
+    }
+  std::sort(uses.begin(), uses.end());
+  Edge_report report;
+  for(std::size_t i = 0; i < uses.size();)
+  {
+    std::size_t j = i + 1;
+    while(j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b)
+      ++j;
+    if(j - i == 1)
+      ++report.border;
+    else if(j - i > 2)
+      ++report.non_manifold;
+    else if(uses[i].forward == uses[i + 1].forward)
+      ++report.inconsistent;
+    i = j;
+  }
+  return report;
+}
+
+// Divergence theorem over the fan triangles of the polygons, relative to the
+// centre of the bounding box (fewer lost digits than the origin far away).
+double enclosed_volume(const Soup& soup)
+{
+  if(soup.points.empty())
+    return 0;
+  CGAL::Bbox_3 box;
+  for(const Point& p : soup.points)
+    box += p.bbox();
+  const K::Vector_3 centre((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
+  double volume = 0;
+  for(const std::vector<std::size_t>& poly : soup.polygons)
+  {
+    const K::Vector_3 a = soup.points[poly[0]] - CGAL::ORIGIN - centre;
+    for(std::size_t k = 1; k + 1 < poly.size(); ++k)
+      volume += CGAL::determinant(a, soup.points[poly[k]] - CGAL::ORIGIN - centre,
+                                  soup.points[poly[k + 1]] - CGAL::ORIGIN - centre);
+  }
+  return volume / 6;
+}
+
+// Hierarchical lambda|mu smoothing of the soup's points through a
+// Surface_mesh: vertex i of the mesh is point i of the soup, so the polygons
+// and their labels are kept as they are.
+void smooth(Soup& soup, const BI::Crease_network& creases, const Options& o)
+{
+  Surface_mesh mesh;
+  BI::Boolean_isosurface_mesh_maps<Point> maps;
+  try
+  {
+    maps = BI::boolean_isosurface_to_mesh(soup, creases, mesh);
+  }
+  catch(const BI::Invalid_input_error& e)
+  {
+    throw Error(std::string("--smooth: ") + e.what());
+  }
+  BI::smooth_with_creases(mesh, o.lambda ? *o.lambda : BI::taubin_default_lambda,
+                          o.mu ? *o.mu : BI::taubin_default_mu,
+                          CGAL::parameters::number_of_iterations(*o.smooth_iterations)
+                              .edge_is_constrained_map(maps.edge_is_crease)
+                              .vertex_is_constrained_map(maps.vertex_is_corner));
+  for(const Surface_mesh::Vertex_index v : mesh.vertices())
+    soup.points[std::size_t(v)] = mesh.point(v);
+}
+
+struct Input
+{
+  std::optional<Grid> grid;
+  std::optional<Tet_mesh> mesh;
+  BI::Scalar_fields fields;
+  BI::Boolean_expression expression;
+};
+
+std::size_t number_of_vertices(const Input& in)
+{
+  return in.grid ? in.grid->number_of_vertices() : in.mesh->number_of_vertices();
+}
+
+void print_domain(const Input& in, const Options& o, double seconds)
+{
+  if(in.grid)
+  {
+    const auto& n = in.grid->vertex_counts();
+    const std::array<double, 6> b = o.box ? *o.box : std::array<double, 6>{-1, -1, -1, 1, 1, 1};
+    std::printf("domain:     grid %zu x %zu x %zu vertices (%zu), %zu tetrahedra, box [%g, %g] x [%g, %g] x [%g, %g]\n",
+                n[0], n[1], n[2], in.grid->number_of_vertices(), in.grid->number_of_tetrahedra(), b[0], b[3], b[1],
+                b[4], b[2], b[5]);
+  }
+  else
+    std::printf("domain:     tetrahedral mesh %s: %zu vertices, %zu tetrahedra (%zu boundary faces), read in %.3f s\n",
+                o.mesh_file.c_str(), in.mesh->number_of_vertices(), in.mesh->number_of_tetrahedra(),
+                in.mesh->number_of_boundary_faces(), seconds);
+}
+
+Input read_input(const Options& o, double& fields_seconds)
+{
+  Input in;
+  // The expression first: a typo fails before any file is read.
+  if(o.expression)
+  {
+    try
+    {
+      in.expression = BI::Boolean_expression::parse(*o.expression);
+    }
+    catch(const BI::Invalid_input_error& e)
+    {
+      throw Error(std::string("--expr: ") + e.what());
+    }
+  }
+  if(o.grid && !o.mesh_file.empty())
+    throw Error("give either --grid or --mesh, not both");
+  if(o.box && !o.grid)
+    throw Error("--box needs --grid");
+  if(!o.grid && o.mesh_file.empty())
+    throw Error("no domain: give --grid N or --mesh FILE (see tbiso --help)");
+  if(!o.fields_file.empty() && !o.field_specs.empty())
+    throw Error("give either --fields FILE or --field SPEC, not both");
+  if(o.fields_file.empty() && o.field_specs.empty())
+    throw Error("no fields given: use --fields FILE or --field SPEC");
+  if(o.field_count != 0 && o.fields_file.empty())
+    throw Error("--field-count is for --fields FILE");
+  if(o.field_specs.size() > 64)
+    throw Error("at most 64 fields are supported");
+  auto start = std::chrono::steady_clock::now();
+  if(o.grid)
+  {
+    const std::array<double, 6> b = o.box ? *o.box : std::array<double, 6>{-1, -1, -1, 1, 1, 1};
+    in.grid.emplace(Grid::spanning(Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5]), *o.grid));
+  }
+  else
+  {
+    try
+    {
+      in.mesh.emplace(BI::IO::read_tetrahedral_mesh<K>(o.mesh_file));
+    }
+    catch(const BI::Invalid_input_error& e)
+    {
+      // The mesh checks (conformity, orientation) do not know the file.
+      const std::string message = e.what();
+      throw Error(message.find(o.mesh_file) == std::string::npos ? "'" + o.mesh_file + "': " + message : message);
+    }
+  }
+  print_domain(in, o, seconds_since(start));
+
+
+  auto check_expression = [&](std::size_t number_of_fields) {
+    if(!o.expression)
+    {
+      if(number_of_fields != 1)
+        throw Error("--expr is required with " + std::to_string(number_of_fields) + " fields");
+      in.expression = BI::Boolean_expression::parse("f0");
+    }
+    if(in.expression.number_of_variables() > number_of_fields)
+      throw Error("the expression names field f" + std::to_string(in.expression.number_of_variables() - 1) +
+                  " but there " + (number_of_fields == 1 ? "is only 1 field" : "are only " + std::to_string(number_of_fields) + " fields") +
+                  " (f0 ... f" + std::to_string(number_of_fields - 1) + ")");
+  };
+  if(!o.field_specs.empty())
+    check_expression(o.field_specs.size());
+
+  start = std::chrono::steady_clock::now();
+  if(!o.fields_file.empty())
+  {
+    in.fields = BI::IO::read_scalar_fields(o.fields_file, number_of_vertices(in), o.field_count);
+    in.fields.check_finite();
+    check_expression(in.fields.number_of_fields());
+  }
+  else
+  {
+    std::vector<Field> functions;
+    for(const std::string& spec : o.field_specs)
+      functions.push_back(make_field(spec));
+    if(in.grid)
+      in.fields = sample(number_of_vertices(in), functions, [&](std::size_t v) { return in.grid->point(v); }, o.parallel);
+    else
+      in.fields = sample(number_of_vertices(in), functions, [&](std::size_t v) { return in.mesh->point(v); }, o.parallel);
+  }
+  fields_seconds = seconds_since(start);
+  return in;
+}
+
+int run(const Options& o)
+{
+  const auto total_start = std::chrono::steady_clock::now();
+  double fields_seconds = 0;
+  Input in = read_input(o, fields_seconds);
+  if(o.fields_file.empty())
+  {
+    std::printf("fields:     %zu\n", in.fields.number_of_fields());
+    for(std::size_t i = 0; i < o.field_specs.size(); ++i)
+      std::printf("  f%zu = %s\n", i, o.field_specs[i].c_str());
+  }
+  else
+    std::printf("fields:     %zu, read from %s\n", in.fields.number_of_fields(), o.fields_file.c_str());
+  std::printf("expression: %s (%zu term%s)%s\n", in.expression.to_string().c_str(), in.expression.number_of_terms(),
+              in.expression.number_of_terms() == 1 ? "" : "s", o.close ? ", closed at the domain boundary" : "");
+  std::printf("time fields:     %.3f s (%s)\n", fields_seconds,
+              o.fields_file.empty() ? "sampling" : "reading");
+  std::fflush(stdout);
+
+  Soup soup;
+  auto start = std::chrono::steady_clock::now();
+  const BI::Boolean_isosurface_statistics s =
+      in.grid ? extract(*in.grid, in.fields, in.expression, soup, o) : extract(*in.mesh, in.fields, in.expression, soup, o);
+  std::printf("time extraction: %.3f s (table %.3f s, extraction %.3f s, welding %.3f s; %zu of %zu tetrahedra evaluated%s)\n",
+              seconds_since(start), s.table_seconds, s.extraction_seconds, s.welding_seconds,
+              s.number_of_evaluated_tetrahedra, s.number_of_tetrahedra,
+#ifdef CGAL_LINKED_WITH_TBB
+              o.parallel ? ", parallel" : ", sequential"
+#else
+              ", sequential"
+#endif
+  );
+
+  start = std::chrono::steady_clock::now();
+  const BI::Crease_network creases = BI::extract_crease_network(soup);
+  std::printf("time creases:    %.3f s\n", seconds_since(start));
+
+  if(o.smooth_iterations)
+  {
+    start = std::chrono::steady_clock::now();
+    smooth(soup, creases, o);
+    std::printf("time smoothing:  %.3f s (%lld lambda|mu iterations, lambda %g, mu %g, creases and corners kept)\n",
+                seconds_since(start), *o.smooth_iterations, o.lambda ? *o.lambda : BI::taubin_default_lambda,
+                o.mu ? *o.mu : BI::taubin_default_mu);
+  }
+
+  start = std::chrono::steady_clock::now();
+  std::vector<std::string> written;
+  if(!o.output.empty())
+  {
+    if(has_extension(o.output, ".ply"))
+      BI::IO::write_PLY_with_fields(o.output, soup);
+    else
+      BI::IO::write_OFF_polygons(o.output, soup);
+    written.push_back(o.output);
+  }
+  if(!o.creases_file.empty())
+  {
+    BI::IO::write_polylines(o.creases_file, soup.points, creases);
+    written.push_back(o.creases_file);
+  }
+  if(!o.corners_file.empty())
+  {
+    BI::IO::write_corners(o.corners_file, soup.points, creases);
+    written.push_back(o.corners_file);
+  }
+  if(!written.empty())
+    std::printf("time writing:    %.3f s\n", seconds_since(start));
+  std::printf("time total:      %.3f s\n", seconds_since(total_start));
+
+  std::size_t triangles = 0;
+  for(const std::vector<std::size_t>& poly : soup.polygons)
+    triangles += poly.size() - 2;
+  std::printf("output:     %zu vertices, %zu polygons (%zu triangles when fanned)\n", soup.points.size(),
+              soup.polygons.size(), triangles);
+  std::printf("creases:    %zu edges, %zu polylines, %zu corners\n", creases.number_of_crease_edges,
+              creases.polylines.size(), creases.corners.size());
+  const Edge_report edges = check_edges(soup);
+  if(soup.polygons.empty())
+    std::printf("surface:    empty\n");
+  else if(edges.closed())
+    std::printf("surface:    closed, volume %.15g%s\n", enclosed_volume(soup),
+                o.smooth_iterations ? " (after smoothing)" : "");
+  else
+    std::printf("surface:    not closed (%zu border edges, %zu non-manifold edges, %zu inconsistent edges)%s\n",
+                edges.border, edges.non_manifold, edges.inconsistent,
+                o.close ? "" : "; --close closes it on the domain boundary");
+  for(const std::string& file : written)
+    std::printf("wrote %s\n", file.c_str());
+  return 0;
+}
+
+int run_demo(Options o)
+{
+  if(o.grid || o.box || !o.mesh_file.empty() || !o.fields_file.empty() || !o.field_specs.empty() || o.expression ||
+     !o.output.empty() || !o.creases_file.empty() || !o.corners_file.empty())
+    throw Error("--demo sets its own domain, fields, expression and outputs");
+  std::error_code ec;
+  std::filesystem::create_directories(o.demo_dir, ec);
+  if(ec || !std::filesystem::is_directory(o.demo_dir))
+    throw Error("cannot create directory '" + o.demo_dir + "'");
+  // Four spheres centred on the vertices of a regular tetrahedron; the set
+  // of points inside at least two of them is the union of the six pairwise
+  // lenses: creases where two spheres meet, corners where three do.
+  const double a = 0.45 / std::sqrt(3.0), r = 0.62;
+  const double centres[4][3] = {{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}};
+  o.grid = std::array<std::size_t, 3>{128, 128, 128};
+  for(const auto& c : centres)
+  {
+    char spec[128];
+    std::snprintf(spec, sizeof spec, "sphere:%.17g,%.17g,%.17g,%.17g", c[0], c[1], c[2], r);
+    o.field_specs.push_back(spec);
+  }
+  o.expression = "f0&f1 | f0&f2 | f0&f3 | f1&f2 | f1&f3 | f2&f3";
+  o.output = o.demo_dir + "/tbiso_demo.ply";
+  o.creases_file = o.demo_dir + "/tbiso_demo_creases.polylines.txt";
+  o.corners_file = o.demo_dir + "/tbiso_demo_corners.xyz";
+  std::printf("TBISO demo: the points inside at least two of four spheres (radius %g, centres at the\n"
+              "vertices of a regular tetrahedron), on a 128^3 grid over [-1, 1]^3\n",
+              r);
+  return run(o);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    Options options;
+    if(!parse_arguments(argc, argv, options))
+    {
+      std::cout << usage_text;
+      return 0;
+    }
+    if(argc == 1)
+      throw Error("nothing to do (see tbiso --help, or try tbiso --demo DIR)");
+#ifdef CGAL_LINKED_WITH_TBB
+    std::optional<tbb::global_control> limit;
+    if(options.threads > 0)
+      limit.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
+#endif
+    if(!options.demo_dir.empty())
+      return run_demo(options);
+    return run(options);
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "tbiso: error: out of memory (use a coarser grid)\n";
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "tbiso: error: " << e.what() << "\n";
+  }
+  return 1;
+}

@@ -1,0 +1,535 @@
+// Runs the `tbiso` command-line tool on analytic fields, field files and the
+// shared tetrahedral meshes, and checks what it prints and writes: the files
+// are read back with the package's readers and checked independently
+// (closedness, volume against exact values or a PMP clip of the input mesh).
+// Also tests boolean_isosurface_to_mesh(), which the tool's --smooth uses.
+
+#include <CGAL/Boolean_isosurfacing_3/IO/boolean_isosurface_files.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_to_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/extract_crease_network.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/clip.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <utility>
+#include <vector>
+
+namespace {
+
+namespace BI = CGAL::Boolean_isosurfacing;
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef BI::Boolean_isosurface_soup<Point> Soup;
+typedef CGAL::Surface_mesh<Point> Mesh;
+
+const std::string data_dir = BISO_SHARED_DATA_DIR;
+const double pi = 3.14159265358979323846;
+
+struct Result
+{
+  int status;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+// The number printed after `key`, or NaN when `key` is not printed.
+double number_after(const std::string& text, const std::string& key)
+{
+  const auto at = text.find(key);
+  return at == std::string::npos ? std::nan("") : std::atof(text.c_str() + at + key.size());
+}
+
+// Every undirected edge in exactly two polygons, traversed in opposite
+// directions: the surface bounds a solid.
+::testing::AssertionResult is_closed_surface(const Soup& s)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::pair<int, int>> edges; // (forward, backward) uses
+  for(const auto& poly : s.polygons)
+    for(std::size_t k = 0; k < poly.size(); ++k)
+    {
+      const std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
+      auto& e = edges[{std::min(a, b), std::max(a, b)}];
+      (a < b ? e.first : e.second) += 1;
+    }
+  for(const auto& [edge, uses] : edges)
+    if(uses.first != 1 || uses.second != 1)
+      return ::testing::AssertionFailure() << "edge (" << edge.first << ", " << edge.second << ") has "
+                                           << uses.first << " + " << uses.second << " polygons";
+  return ::testing::AssertionSuccess();
+}
+
+// The divergence theorem over the fan triangles, as an independent check of
+// the volume the tool prints.
+double volume(const Soup& s)
+{
+  double v = 0;
+  for(const auto& poly : s.polygons)
+    for(std::size_t k = 1; k + 1 < poly.size(); ++k)
+      v += CGAL::determinant(s.points[poly[0]] - CGAL::ORIGIN, s.points[poly[k]] - CGAL::ORIGIN,
+                             s.points[poly[k + 1]] - CGAL::ORIGIN) / 6;
+  return v;
+}
+
+// Lines of numbers; every line must parse completely.
+std::vector<std::vector<double>> read_number_lines(const std::string& path)
+{
+  std::vector<std::vector<double>> lines;
+  std::ifstream in(path);
+  std::string line;
+  while(std::getline(in, line))
+  {
+    std::istringstream words(line);
+    std::vector<double> values;
+    double x;
+    while(words >> x)
+      values.push_back(x);
+    EXPECT_TRUE(words.eof()) << path << ": cannot parse '" << line << "'";
+    lines.push_back(values);
+  }
+  return lines;
+}
+
+class TbisoTool : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    std::string pattern = (std::filesystem::temp_directory_path() / "biso_tbiso_tool_XXXXXX").string();
+    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+    m_dir = pattern;
+  }
+  void TearDown() override
+  {
+    std::error_code ec;
+    std::filesystem::remove_all(m_dir, ec);
+  }
+
+  std::string file(const std::string& name) const { return m_dir + "/" + name; }
+  std::string write(const std::string& name, const std::string& content) const
+  {
+    std::ofstream(file(name), std::ios::binary) << content;
+    return file(name);
+  }
+
+  Result run(const std::string& arguments) const
+  {
+    const std::string out = file("stdout.txt"), err = file("stderr.txt");
+    const std::string command = std::string(BISO_TBISO_TOOL) + " " + arguments + " >" + out + " 2>" + err + " </dev/null";
+    const int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  }
+
+  Soup read_ply(const std::string& path) const
+  {
+    Soup soup;
+    EXPECT_NO_THROW(BI::IO::read_PLY_with_fields(path, soup)) << path;
+    return soup;
+  }
+
+  std::string m_dir;
+};
+
+// The demo's spheres: a = 0.45 / sqrt(3), radius 0.62.
+std::string demo_fields()
+{
+  const double a = 0.45 / std::sqrt(3.0);
+  const double c[4][3] = {{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}};
+  std::string s;
+  char spec[160];
+  for(const auto& p : c)
+  {
+    std::snprintf(spec, sizeof spec, " --field sphere:%.17g,%.17g,%.17g,0.62", p[0], p[1], p[2]);
+    s += spec;
+  }
+  return s + " --expr \"f0&f1 | f0&f2 | f0&f3 | f1&f2 | f1&f3 | f2&f3\"";
+}
+
+TEST_F(TbisoTool, DemoWritesThreeReadableFiles)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const Result r = run("--demo " + file("demo"));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::cout << "[ INFO     ] tbiso --demo took " << seconds << " s\n" << r.out;
+  EXPECT_LT(seconds, 20.0); // about 1 s alone; generous on a loaded machine
+  for(const char* key : {"domain:     grid 128 x 128 x 128", "fields:     4", "(6 terms)", "time fields:",
+                         "time extraction:", "welding", "time creases:", "time writing:", "output:", "creases:"})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << "\n" << r.out;
+
+  const Soup soup = read_ply(file("demo/tbiso_demo.ply"));
+  ASSERT_GT(soup.polygons.size(), 10000u);
+  EXPECT_TRUE(is_closed_surface(soup));
+  for(int label : soup.face_fields)
+    EXPECT_TRUE(label >= 0 && label < 4) << label;
+  const double v = volume(soup);
+  EXPECT_NEAR(number_after(r.out, "volume "), v, 1e-9 * v) << r.out;
+  EXPECT_EQ(number_after(r.out, "output:     "), double(soup.points.size()));
+
+  const auto polylines = read_number_lines(file("demo/tbiso_demo_creases.polylines.txt"));
+  EXPECT_GT(polylines.size(), 0u);
+  EXPECT_EQ(double(polylines.size()), number_after(r.out, "edges, ")) << r.out;
+  for(const auto& line : polylines)
+  {
+    ASSERT_FALSE(line.empty());
+    EXPECT_GE(line[0], 2);
+    EXPECT_EQ(line.size(), 1 + 3 * std::size_t(line[0]));
+  }
+  const auto corners = read_number_lines(file("demo/tbiso_demo_corners.xyz"));
+  EXPECT_GT(corners.size(), 0u);
+  EXPECT_EQ(double(corners.size()), number_after(r.out, "polylines, ")) << r.out;
+  for(const auto& c : corners)
+    EXPECT_EQ(c.size(), 3u);
+}
+
+// The box [-0.5, 2] x [-0.25, 2] x [-0.75, 2] cut by the domain [-1, 1]^3:
+// its faces inside the domain lie on grid planes (spacing 0.25), so sampling
+// is exact and so is the volume, 1.5 * 1.25 * 1.75.
+TEST_F(TbisoTool, BoxOnGridPlanesHasTheExactVolume)
+{
+  const Result r = run("--grid 9 --field box:-0.5,-0.25,-0.75,2,2,2 --close -o " + file("box.ply"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "volume "), 1.5 * 1.25 * 1.75, 1e-9) << r.out;
+  const Soup soup = read_ply(file("box.ply"));
+  EXPECT_TRUE(is_closed_surface(soup));
+  EXPECT_NEAR(volume(soup), 1.5 * 1.25 * 1.75, 1e-9);
+
+  // A box wholly inside the domain is not exact, even with its faces on grid
+  // planes: along its edges in the anti-diagonal directions of the Kuhn
+  // triangulation some tetrahedra have their four corners on the box surface.
+  // The field is identically zero on them, so the regularized set leaves
+  // them out and the edges are chamfered (by less than a cell).
+  const Result inner = run("--grid 9 --field box:-0.5,-0.25,-0.75,0.75,0.5,0.25");
+  ASSERT_EQ(inner.status, 0) << inner.err;
+  const double exact = 1.25 * 0.75 * 1;
+  EXPECT_LT(number_after(inner.out, "volume "), exact) << inner.out;
+  EXPECT_GT(number_after(inner.out, "volume "), 0.75 * exact) << inner.out;
+}
+
+TEST_F(TbisoTool, CylinderAndTorusFields)
+{
+  // A cylinder along y, centre (x, z) = (0.3, -0.2), radius 0.4, closed at y = +-1.
+  const Result c = run("--grid 33 --field cylinder:y,0.3,-0.2,0.4 --close -o " + file("c.ply"));
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NEAR(number_after(c.out, "volume "), pi * 0.16 * 2, 0.02 * pi * 0.16 * 2) << c.out;
+  const Soup soup = read_ply(file("c.ply"));
+  CGAL::Bbox_3 box;
+  for(const Point& p : soup.points)
+    box += p.bbox();
+  EXPECT_DOUBLE_EQ(box.ymin(), -1);
+  EXPECT_DOUBLE_EQ(box.ymax(), 1);
+  EXPECT_NEAR(box.xmin(), -0.1, 0.01);
+  EXPECT_NEAR(box.xmax(), 0.7, 0.01);
+  EXPECT_NEAR(box.zmin(), -0.6, 0.01);
+  EXPECT_NEAR(box.zmax(), 0.2, 0.01);
+
+  const Result t = run("--grid 41 --field torus:0.6,0.25");
+  ASSERT_EQ(t.status, 0) << t.err;
+  const double torus = 2 * pi * pi * 0.6 * 0.25 * 0.25;
+  EXPECT_NEAR(number_after(t.out, "volume "), torus, 0.03 * torus) << t.out;
+}
+
+TEST_F(TbisoTool, FieldFilesTextAndRaw)
+{
+  // f0 = x - 0.25 on a 5^3 grid (spacing 0.5): linear, so exact.
+  std::string text = "1\n";
+  std::vector<double> values;
+  for(int k = 0; k < 5; ++k)
+    for(int j = 0; j < 5; ++j)
+      for(int i = 0; i < 5; ++i)
+        values.push_back(-1 + 0.5 * i - 0.25);
+  for(double v : values)
+    text += std::to_string(v) + "\n";
+  const Result r = run("--grid 5 --close --fields " + write("f.txt", text));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "volume "), 1.25 * 4, 1e-12) << r.out;
+
+  std::ofstream raw(file("f.f64"), std::ios::binary);
+  raw.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(double)));
+  raw.close();
+  const Result b = run("--grid 5 --close --fields " + file("f.f64") + " --field-count 1");
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_NEAR(number_after(b.out, "volume "), 1.25 * 4, 1e-12) << b.out;
+}
+
+TEST_F(TbisoTool, OctopusMeshSphereAndPlane)
+{
+  const Result r = run("--mesh " + data_dir + "/tet/octopus-low.mesh --field sphere:0.05,0,0.1,0.3 "
+                       "--field plane:1,0.2,0,-0.02 --expr \"f0 & f1\" --close -o " + file("o.ply") +
+                       " --creases " + file("o.txt"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("1140 tetrahedra"), std::string::npos) << r.out;
+  const Soup soup = read_ply(file("o.ply"));
+  ASSERT_GT(soup.polygons.size(), 0u);
+  EXPECT_TRUE(is_closed_surface(soup));
+  const double v = volume(soup);
+  EXPECT_GT(v, 0);
+  EXPECT_LT(v, 0.009135547848); // the whole octopus (README)
+  EXPECT_NEAR(number_after(r.out, "volume "), v, 1e-9 * v);
+  // Faces on the sphere, on the plane and on the mesh boundary.
+  std::vector<int> labels(soup.face_fields);
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  EXPECT_EQ(labels, (std::vector<int>{-1, 0, 1}));
+  EXPECT_GT(read_number_lines(file("o.txt")).size(), 0u);
+}
+
+// tet/bunny.mesh tetrahedralizes the bunny's convex hull with the surface of
+// meshes/bunny.off as internal faces; the signed distance to that surface
+// and a plane y = 0.11 give the part of the bunny below the plane.
+TEST_F(TbisoTool, BunnyBelowAPlaneMatchesAClip)
+{
+  const std::string bunny = data_dir + "/meshes/bunny.off";
+  const Result r = run("--mesh " + data_dir + "/tet/bunny.mesh --field distance:" + bunny +
+                       " --field plane:0,1,0,-0.11 --expr \"f0 & f1\" --close -o " + file("b.ply"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Soup soup = read_ply(file("b.ply"));
+  EXPECT_TRUE(is_closed_surface(soup));
+  const double v = volume(soup);
+  EXPECT_NEAR(number_after(r.out, "volume "), v, 1e-9 * v);
+  EXPECT_GT(v, 0);
+  EXPECT_LT(v, 0.000754); // the whole bunny (README)
+
+  // Reference: the closed bunny clipped by the same plane (negative side kept).
+  Mesh mesh;
+  BI::IO::read_closed_triangle_mesh(bunny, mesh);
+  ASSERT_TRUE(PMP::clip(mesh, K::Plane_3(0, 1, 0, -0.11), CGAL::parameters::clip_volume(true)));
+  const double reference = CGAL::to_double(PMP::volume(mesh));
+  ASSERT_GT(reference, 0.0001);
+  std::cout << "[ INFO     ] bunny below y = 0.11: tbiso " << v << ", PMP::clip " << reference << " (relative difference "
+            << std::abs(v - reference) / reference << ")\n";
+  EXPECT_NEAR(v, reference, 0.05 * reference) << "reference (PMP::clip) " << reference;
+}
+
+TEST_F(TbisoTool, SmoothingKeepsCornersFixed)
+{
+  const std::string common = "--grid 33" + demo_fields();
+  const Result plain = run(common + " -o " + file("p.ply") + " --corners " + file("p.xyz"));
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const Result smooth = run(common + " --smooth 5 -o " + file("s.ply") + " --corners " + file("s.xyz"));
+  ASSERT_EQ(smooth.status, 0) << smooth.err;
+  EXPECT_NE(smooth.out.find("time smoothing:"), std::string::npos) << smooth.out;
+
+  const std::string corners = slurp(file("p.xyz"));
+  EXPECT_GT(count_lines(corners), 0);
+  EXPECT_EQ(slurp(file("s.xyz")), corners); // the same doubles, digit for digit
+
+  // Same polygons and labels; vertices moved.
+  const Soup a = read_ply(file("p.ply")), b = read_ply(file("s.ply"));
+  EXPECT_EQ(a.polygons, b.polygons);
+  EXPECT_EQ(a.face_fields, b.face_fields);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < a.points.size(); ++i)
+    moved += a.points[i] != b.points[i];
+  EXPECT_GT(moved, a.points.size() / 2);
+  EXPECT_TRUE(is_closed_surface(b));
+}
+
+TEST_F(TbisoTool, SmoothingANonManifoldSurfaceFails)
+{
+  // XOR of two overlapping balls: four sheets meet along the circle where
+  // the spheres cross.
+  const Result r = run("--grid 17 --field sphere:0.2,0,0,0.5 --field sphere:-0.2,0,0,0.5 "
+                       "--expr \"f0 & !f1 | !f0 & f1\" --smooth");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("non-manifold"), std::string::npos) << r.err;
+  // Without smoothing it is written as a soup.
+  const Result soup = run("--grid 17 --field sphere:0.2,0,0,0.5 --field sphere:-0.2,0,0,0.5 "
+                          "--expr \"f0 & !f1 | !f0 & f1\" -o " + file("x.ply"));
+  EXPECT_EQ(soup.status, 0) << soup.err;
+  EXPECT_NE(soup.out.find("non-manifold edges"), std::string::npos) << soup.out;
+}
+
+TEST_F(TbisoTool, ParallelSequentialAndThreadLimitGiveTheSameFile)
+{
+  const std::string common = "--grid 25" + demo_fields() + " --close";
+  ASSERT_EQ(run(common + " -o " + file("par.ply")).status, 0);
+  ASSERT_EQ(run(common + " --sequential -o " + file("seq.ply")).status, 0);
+  ASSERT_EQ(run(common + " --threads 1 -o " + file("one.ply")).status, 0);
+  const std::string par = slurp(file("par.ply"));
+  EXPECT_GT(par.size(), 1000u);
+  EXPECT_EQ(slurp(file("seq.ply")), par);
+  EXPECT_EQ(slurp(file("one.ply")), par);
+}
+
+TEST_F(TbisoTool, HelpAndOffOutput)
+{
+  const Result help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("usage: tbiso"), std::string::npos) << help.out;
+  const Result off = run("--grid 9 --field sphere:0,0,0,0.5 -o " + file("s.OFF"));
+  EXPECT_EQ(off.status, 0) << off.err;
+  EXPECT_EQ(slurp(file("s.OFF")).substr(0, 4), "OFF\n");
+}
+
+// Every error: exit status 1, one line "tbiso: error: ..." naming the problem.
+TEST_F(TbisoTool, ErrorsGiveOneLineAndExitCodeOne)
+{
+  const std::string sphere = " --field sphere:0,0,0,0.5";
+  const std::string nan_fields = write("nan.txt", "1\n0\n1\nnan\n-1\n0\n1\n2\n3\n");
+  const std::string short_fields = write("short.txt", "1\n0\n1\n");
+  const std::string non_conforming =
+      write("nc.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n6\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+                       "0 0 -1 0\n0.2 0.2 1 0\nTetrahedra\n3\n1 2 3 4 0\n1 2 3 5 0\n1 2 3 6 0\nEnd\n");
+  const std::string open_mesh = write("open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n");
+  const std::pair<std::string, const char*> cases[] = {
+      {"", "nothing to do"},
+      {"--grid 9 --frobnicate" + sphere, "unknown option"},
+      {"--grid 9" + sphere + " --expr", "needs a value"},
+      {"--grid 9x" + sphere, "not a whole number"},
+      {"--grid 1" + sphere, "at least 2"},
+      {"--grid 9 --field sphere:0,0,0,abc", "not a finite number"},
+      {"--grid 9 --field sphere:0,0,0", "expected 4"},
+      {"--grid 9 --box 1,1,1,0,0,0" + sphere, "minimum"},
+      {"--grid 9 --field cone:1,2", "unknown kind"},
+      {"--grid 9", "no fields"},
+      {"--field-count 1" + sphere, "no domain"},
+      {"--grid 9 --mesh x.mesh" + sphere, "not both"},
+      {"--grid 9 --fields " + short_fields + sphere, "not both"},
+      {"--grid 2 --fields " + short_fields, "2 vertices"},
+      {"--grid 2 --fields " + nan_fields, "non-finite"},
+      {"--grid 2 --fields " + file("missing.txt"), "cannot open"},
+      {"--grid 2 --fields " + file("missing.f64") + " --field-count 1", "cannot open"},
+      {"--grid 9" + sphere + " --field plane:1,0,0,0", "--expr is required"},
+      {"--grid 9" + sphere + " --field plane:1,0,0,0 --expr \"f0 & f3\"", "f3"},
+      {"--grid 9" + sphere + " --expr \"f0 & (f1\"", "column"},
+      {"--grid 9" + sphere + " --expr \"f0 + f1\"", "column"},
+      {"--mesh " + non_conforming + sphere, "not conforming"},
+      {"--mesh " + file("missing.mesh") + sphere, "cannot open"},
+      {"--mesh " + file("x.vtk") + sphere, "unknown tetrahedral mesh format"},
+      {"--grid 9 --field distance:" + file("missing.off"), "cannot open"},
+      {"--grid 9 --field distance:" + open_mesh, "not closed"},
+      {"--grid 9" + sphere + " -o " + file("out.stl"), "extension"},
+      {"--grid 9" + sphere + " --threads 0", "threads"},
+      {"--grid 9" + sphere + " --smooth 2 --lambda 0.5 --mu 0.5", "mu"},
+      {"--grid 9" + sphere + " --lambda 0.5", "--smooth"},
+      {"--grid 9" + sphere + " -o " + file("no/such/dir/out.ply"), "cannot open"},
+      {"--demo " + file("d") + " --grid 9", "--demo"},
+  };
+  for(const auto& [arguments, expected] : cases)
+  {
+    const Result r = run(arguments);
+    EXPECT_EQ(r.status, 1) << arguments << "\n" << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << arguments << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("tbiso: error: ", 0), 0u) << arguments << ": " << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << arguments << ": " << r.err;
+  }
+}
+
+// ---- boolean_isosurface_to_mesh() ----------------------------------------
+
+typedef std::function<double(const Point&)> Field;
+
+Soup extract(std::size_t n, const std::vector<Field>& fields, const std::string& expression)
+{
+  const BI::Tetrahedral_grid_3<K> grid = BI::Tetrahedral_grid_3<K>::spanning(Point(-1, -1, -1), Point(1, 1, 1), {n, n, n});
+  Soup soup;
+  BI::extract_boolean_isosurface(grid, BI::sample_fields(grid, fields), BI::Boolean_expression::parse(expression), soup,
+                                 BI::parameters::close_at_domain_boundary(true));
+  return soup;
+}
+
+Field sphere(double cx, double cy, double cz, double r)
+{
+  return [=](const Point& p) {
+    return std::sqrt(CGAL::square(p.x() - cx) + CGAL::square(p.y() - cy) + CGAL::square(p.z() - cz)) - r;
+  };
+}
+
+TEST(BooleanIsosurfaceToMesh, KeepsOrderAndMarksLabelsCreasesCorners)
+{
+  const Soup soup = extract(17, {sphere(0.2, 0.1, 0, 0.6), sphere(-0.2, 0, 0.1, 0.6), sphere(0, -0.3, 0, 0.5)},
+                            "f0 & f1 & f2");
+  ASSERT_GT(soup.polygons.size(), 0u);
+  const BI::Crease_network creases = BI::extract_crease_network(soup);
+  ASSERT_GT(creases.corners.size(), 0u);
+
+  Mesh mesh;
+  mesh.add_vertex(Point(5, 5, 5)); // cleared first
+  const BI::Boolean_isosurface_mesh_maps<Point> maps = BI::boolean_isosurface_to_mesh(soup, mesh);
+  ASSERT_EQ(mesh.number_of_vertices(), soup.points.size());
+  ASSERT_EQ(mesh.number_of_faces(), soup.polygons.size());
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  for(const Mesh::Vertex_index v : mesh.vertices())
+    EXPECT_EQ(mesh.point(v), soup.points[std::size_t(v)]);
+  for(const Mesh::Face_index f : mesh.faces())
+  {
+    std::vector<std::size_t> polygon;
+    for(const Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
+      polygon.push_back(std::size_t(v));
+    const std::vector<std::size_t>& expected = soup.polygons[std::size_t(f)];
+    ASSERT_EQ(polygon.size(), expected.size());
+    std::rotate(polygon.begin(), std::find(polygon.begin(), polygon.end(), expected[0]), polygon.end());
+    EXPECT_EQ(polygon, expected);
+    EXPECT_EQ(maps.face_field[f], soup.face_fields[std::size_t(f)]);
+  }
+  std::size_t crease_edges = 0, corners = 0;
+  for(const Mesh::Edge_index e : mesh.edges())
+    crease_edges += maps.edge_is_crease[e];
+  for(const Mesh::Vertex_index v : mesh.vertices())
+    corners += maps.vertex_is_corner[v];
+  EXPECT_EQ(crease_edges, creases.number_of_crease_edges);
+  EXPECT_EQ(corners, creases.corners.size());
+  // The maps are named properties of the mesh.
+  const bool has_field = mesh.property_map<Mesh::Face_index, int>("f:field").second;
+  const bool has_crease = mesh.property_map<Mesh::Edge_index, bool>("e:crease").second;
+  const bool has_corner = mesh.property_map<Mesh::Vertex_index, bool>("v:corner").second;
+  EXPECT_TRUE(has_field && has_crease && has_corner);
+
+  // The generic overload (any MutableFaceGraph) builds the same mesh.
+  Mesh generic;
+  BI::boolean_isosurface_to_mesh<Point, Mesh>(soup, generic);
+  EXPECT_EQ(generic.number_of_faces(), mesh.number_of_faces());
+  const bool generic_has_field = generic.property_map<Mesh::Face_index, int>("f:field").second;
+  EXPECT_FALSE(generic_has_field);
+}
+
+TEST(BooleanIsosurfaceToMesh, NonManifoldSurfaceIsRefused)
+{
+  const Soup soup = extract(17, {sphere(0.2, 0, 0, 0.5), sphere(-0.2, 0, 0, 0.5)}, "f0 & !f1 | !f0 & f1");
+  Mesh mesh;
+  try
+  {
+    BI::boolean_isosurface_to_mesh(soup, mesh);
+    ADD_FAILURE() << "no exception";
+  }
+  catch(const BI::Invalid_input_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("non-manifold edge"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("soup"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(mesh.number_of_faces(), 0u);
+}
+
+} // namespace
