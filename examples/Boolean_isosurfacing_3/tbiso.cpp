@@ -16,7 +16,9 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/scalar_fields.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/tetrahedral_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/Boolean_isosurface_PLY_stream.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_by_slabs.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_to_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/crease_preserving_smoothing.h>
 #include <CGAL/Boolean_isosurfacing_3/extract_crease_network.h>
@@ -50,6 +52,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <sys/resource.h>
 #include <unistd.h>
 #include <utility>
 #include <vector>
@@ -70,6 +73,7 @@ const char* usage_text =
     "             (--fields FILE [--field-count N] | --field SPEC [--field SPEC ...])\n"
     "             [--expr TEXT] [--close] [--smooth [ITER] [--lambda L] [--mu M]]\n"
     "             [-o OUT.ply|OUT.off] [--creases FILE] [--corners FILE] [--sequential] [--threads N]\n"
+    "             [--slab-size LAYERS] [--out-of-core]\n"
     "       tbiso --demo DIR\n"
     "\n"
     "The boundary of the regularized Boolean set EXPR(f0, f1, ...) where the literal fi is\n"
@@ -106,6 +110,11 @@ const char* usage_text =
     "other:\n"
     "  --sequential          run on one thread (default: parallel when built with TBB)\n"
     "  --threads N           use at most N threads\n"
+    "  --slab-size LAYERS    cube layers per slab along z, the unit of parallel work on a grid\n"
+    "                        (default: about 1/64 of the grid in core, 8 out of core)\n"
+    "  --out-of-core         grid + raw --fields file + -o OUT.ply: read the fields one slab at\n"
+    "                        a time and stream the surface to the file; memory is a few slabs\n"
+    "                        (no --creases, --corners or --smooth: they need the whole surface)\n"
     "  --demo DIR            four spheres on a 128^3 grid, 'at least two of four';\n"
     "                        writes DIR/tbiso_demo.ply, DIR/tbiso_demo_creases.polylines.txt,\n"
     "                        DIR/tbiso_demo_corners.xyz\n"
@@ -129,6 +138,8 @@ struct Options
   bool close = false;
   bool parallel = true;
   std::size_t threads = 0;
+  std::size_t slab_layers = 0;
+  bool out_of_core = false;
   std::optional<long long> smooth_iterations;
   std::optional<double> lambda, mu;
   std::string output, creases_file, corners_file, demo_dir;
@@ -250,6 +261,15 @@ bool parse_arguments(int argc, char** argv, Options& o)
       if(o.threads < 1)
         throw Error("--threads: at least 1 thread is needed, got " + text);
     }
+    else if(arg == "--slab-size")
+    {
+      const std::string text = value();
+      o.slab_layers = parse_count(text, "--slab-size");
+      if(o.slab_layers < 1)
+        throw Error("--slab-size: at least 1 layer per slab is needed, got " + text);
+    }
+    else if(arg == "--out-of-core")
+      o.out_of_core = true;
     else if(arg == "--smooth")
     {
       // ITER is optional: a following word that is not an option is it.
@@ -466,7 +486,9 @@ template <typename Domain>
 BI::Boolean_isosurface_statistics extract(const Domain& domain, const BI::Scalar_fields& fields,
                                           const BI::Boolean_expression& expression, Soup& soup, const Options& o)
 {
-  const auto np = BI::parameters::close_at_domain_boundary(o.close, BI::parameters::progress(Progress_bar()));
+  // slab_layers 0: the library's default.
+  const auto np = BI::parameters::close_at_domain_boundary(
+      o.close, BI::parameters::progress(Progress_bar(), BI::parameters::slab_layers(o.slab_layers)));
   if(o.parallel)
     return BI::extract_boolean_isosurface<CGAL::Parallel_if_available_tag>(domain, fields, expression, soup, np);
   return BI::extract_boolean_isosurface<CGAL::Sequential_tag>(domain, fields, expression, soup, np);
@@ -766,6 +788,65 @@ int run(const Options& o)
   return 0;
 }
 
+double peak_resident_megabytes()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.; // kilobytes on Linux
+}
+
+// Fields read one slab at a time from a raw file, the surface streamed to a
+// binary PLY file: memory is a few slabs, whatever the grid size.
+int run_out_of_core(const Options& o)
+{
+  const auto total_start = std::chrono::steady_clock::now();
+  if(!o.grid || !o.mesh_file.empty())
+    throw Error("--out-of-core needs --grid");
+  const bool f32 = has_extension(o.fields_file, ".f32");
+  if(o.fields_file.empty() || !(f32 || has_extension(o.fields_file, ".f64") || has_extension(o.fields_file, ".raw")))
+    throw Error("--out-of-core needs a raw --fields file (.f32, .f64 or .raw)");
+  if(o.field_count == 0)
+    throw Error("--out-of-core: give the number of fields with --field-count N");
+  if(!has_extension(o.output, ".ply"))
+    throw Error("--out-of-core writes the surface as it goes: give -o OUT.ply");
+  if(!o.creases_file.empty() || !o.corners_file.empty() || o.smooth_iterations)
+    throw Error("--out-of-core: --creases, --corners and --smooth need the whole surface in memory");
+  BI::Boolean_expression expression = BI::Boolean_expression::parse(o.expression ? *o.expression : "f0");
+  if(expression.number_of_variables() > o.field_count)
+    throw Error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
+                " but there are only " + std::to_string(o.field_count) + " fields");
+  const std::array<double, 6> b = o.box ? *o.box : std::array<double, 6>{-1, -1, -1, 1, 1, 1};
+  const Grid grid = Grid::spanning(Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5]), *o.grid);
+  Input in;
+  in.grid.emplace(grid);
+  print_domain(in, o, 0);
+  BI::IO::Raw_scalar_field_reader reader(o.fields_file, grid.number_of_vertices(), o.field_count,
+                                         f32 ? BI::IO::Raw_scalar_type::FLOAT32 : BI::IO::Raw_scalar_type::FLOAT64);
+  std::printf("fields:     %zu, read slab by slab from %s\n", o.field_count, o.fields_file.c_str());
+  std::printf("expression: %s (%zu term%s)%s\n", expression.to_string().c_str(), expression.number_of_terms(),
+              expression.number_of_terms() == 1 ? "" : "s", o.close ? ", closed at the domain boundary" : "");
+  std::fflush(stdout);
+  BI::IO::Boolean_isosurface_PLY_stream ply(o.output);
+  const auto np = BI::parameters::close_at_domain_boundary(
+      o.close, BI::parameters::progress(Progress_bar(), BI::parameters::slab_layers(o.slab_layers ? o.slab_layers : 8)));
+  const auto start = std::chrono::steady_clock::now();
+  const BI::Boolean_isosurface_slab_statistics s =
+      o.parallel ? BI::extract_boolean_isosurface_by_slabs<CGAL::Parallel_if_available_tag>(grid, reader, expression, ply, np)
+                 : BI::extract_boolean_isosurface_by_slabs<CGAL::Sequential_tag>(grid, reader, expression, ply, np);
+  ply.close();
+  std::printf("time extraction: %.3f s (%zu slabs of %zu layers; reading %.3f s, evaluation and reading %.3f s, "
+              "welding and writing %.3f s; %zu of %zu tetrahedra evaluated%s)\n",
+              seconds_since(start), s.number_of_slabs, o.slab_layers ? o.slab_layers : std::size_t(8), s.reading_seconds,
+              s.extraction_seconds, s.welding_seconds, s.number_of_evaluated_tetrahedra, s.number_of_tetrahedra,
+              o.parallel ? ", parallel" : ", sequential");
+  std::printf("time total:      %.3f s\n", seconds_since(total_start));
+  std::printf("output:     %zu vertices, %zu polygons\n", s.number_of_vertices, s.number_of_polygons);
+  std::printf("memory:     %.1f MB of field values held at most, peak resident %.1f MB\n",
+              double(s.peak_field_values) * 8 / 1e6, peak_resident_megabytes());
+  std::printf("wrote %s\n", o.output.c_str());
+  return 0;
+}
+
 int run_demo(Options o)
 {
   if(o.grid || o.box || !o.mesh_file.empty() || !o.fields_file.empty() || !o.field_specs.empty() || o.expression ||
@@ -818,6 +899,8 @@ int main(int argc, char** argv)
 #endif
     if(!options.demo_dir.empty())
       return run_demo(options);
+    if(options.out_of_core)
+      return run_out_of_core(options);
     return run(options);
   }
   catch(const std::bad_alloc&)

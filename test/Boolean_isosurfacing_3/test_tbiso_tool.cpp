@@ -28,6 +28,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <set>
 #include <string>
 #include <sys/wait.h>
 #include <utility>
@@ -279,6 +280,79 @@ TEST_F(TbisoTool, FieldFilesTextAndRaw)
   const Result b = run("--grid 5 --close --fields " + file("f.f64") + " --field-count 1");
   ASSERT_EQ(b.status, 0) << b.err;
   EXPECT_NEAR(number_after(b.out, "volume "), 1.25 * 4, 1e-12) << b.out;
+}
+
+// --out-of-core reads a raw file slab by slab and streams a binary PLY: the
+// same surface as the in-core run, whatever the slab size.
+TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
+{
+  const Result in_core = run("--grid 21" + demo_fields() + " --close -o " + file("in_core.ply"));
+  ASSERT_EQ(in_core.status, 0) << in_core.err;
+  // The same fields as a raw float64 file (the tool samples in double).
+  const double a = 0.45 / std::sqrt(3.0);
+  const double c[4][3] = {{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}};
+  std::vector<double> values;
+  for(int k = 0; k < 21; ++k)
+    for(int j = 0; j < 21; ++j)
+      for(int i = 0; i < 21; ++i)
+      {
+        const double p[3] = {-1 + 0.1 * i, -1 + 0.1 * j, -1 + 0.1 * k};
+        for(const auto& q : c)
+          values.push_back(std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                     (p[2] - q[2]) * (p[2] - q[2])) - 0.62);
+      }
+  std::ofstream raw(file("f.f64"), std::ios::binary);
+  raw.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(double)));
+  raw.close();
+  const std::string expression = " --expr \"f0&f1 | f0&f2 | f0&f3 | f1&f2 | f1&f3 | f2&f3\" --close";
+  const Result from_file = run("--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression +
+                               " -o " + file("from_file.ply"));
+  ASSERT_EQ(from_file.status, 0) << from_file.err;
+  const Soup reference = read_ply(file("from_file.ply"));
+  EXPECT_GT(reference.polygons.size(), 100u);
+  for(const char* slab : {"1", "3", "8"})
+  {
+    const Result r = run("--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression +
+                         " --out-of-core --slab-size " + slab + " -o " + file("ooc.ply"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("peak resident"), std::string::npos) << r.out;
+    const Soup streamed = read_ply(file("ooc.ply"));
+    EXPECT_EQ(streamed.polygons.size(), reference.polygons.size()) << slab;
+    EXPECT_EQ(streamed.points.size(), reference.points.size()) << slab;
+    // Same points and polygons up to the numbering, which depends on the slab size.
+    std::multiset<std::vector<Point>> a, b;
+    for(const auto& poly : reference.polygons)
+    {
+      std::vector<Point> q;
+      for(std::size_t v : poly)
+        q.push_back(reference.points[v]);
+      std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
+      a.insert(q);
+    }
+    for(const auto& poly : streamed.polygons)
+    {
+      std::vector<Point> q;
+      for(std::size_t v : poly)
+        q.push_back(streamed.points[v]);
+      std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
+      b.insert(q);
+    }
+    EXPECT_TRUE(a == b) << "slab size " << slab;
+  }
+  // Its own errors.
+  const std::pair<std::string, const char*> errors[] = {
+      {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o x.off", "OUT.ply"},
+      {"--grid 21 --fields " + file("f.f64") + expression + " --out-of-core -o x.ply", "--field-count"},
+      {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o " +
+           file("x.ply") + " --creases c.txt", "whole surface"},
+      {"--grid 21" + demo_fields() + " --out-of-core -o " + file("x.ply"), "raw --fields"},
+      {"--grid 21 --fields " + file("f.f64") + " --field-count 4 --slab-size 0" + expression, "at least 1"}};
+  for(const auto& e : errors)
+  {
+    const Result r = run(e.first);
+    EXPECT_EQ(r.status, 1) << e.first;
+    EXPECT_NE(r.err.find(e.second), std::string::npos) << e.first << "\n" << r.err;
+  }
 }
 
 TEST_F(TbisoTool, OctopusMeshSphereAndPlane)

@@ -285,8 +285,8 @@ Scalar_fields sample_fields(const Domain& domain, const std::vector<Function>& f
 ///     \cgalParamType{bool} \cgalParamDefault{false}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{slab_layers}
-///     \cgalParamDescription{cube layers per slab (the unit of parallel work)}
-///     \cgalParamType{std::size_t} \cgalParamDefault{chosen from the grid size}
+///     \cgalParamDescription{cube layers per slab (the unit of parallel work); 0 means the default}
+///     \cgalParamType{std::size_t} \cgalParamDefault{about 1/64 of the grid's layers}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{progress}
 ///     \cgalParamDescription{called with the fraction done, from the calling thread}
@@ -321,8 +321,8 @@ extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Sca
   const std::array<std::size_t, 3>& n = grid.vertex_counts();
   const std::size_t layers = n[2] - 1;
   const std::size_t default_slab = std::max<std::size_t>(1, (layers + 63) / 64);
-  const std::size_t slab = std::max<std::size_t>(
-      1, choose_parameter(get_parameter(np, internal_np::slab_layers), default_slab));
+  const std::size_t requested_slab = choose_parameter(get_parameter(np, internal_np::slab_layers), std::size_t(0));
+  const std::size_t slab = requested_slab > 0 ? requested_slab : default_slab; // 0: the default
   const std::size_t number_of_slabs = (layers + slab - 1) / slab;
   const std::size_t layer_size = n[0] * n[1];
   const std::size_t N = fields.number_of_fields();
