@@ -19,13 +19,16 @@
 
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/parallel_pipeline.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <mutex>
 #include <string>
 #include <thread>
 #include <unordered_map>
@@ -85,9 +88,10 @@ private:
 struct Boolean_isosurface_slab_statistics : Boolean_isosurface_statistics
 {
   std::size_t number_of_slabs = 0;
-  /// Time spent reading field values (all slabs, summed over threads).
+  /// Time spent reading field values (the reading stage, all slabs).
   double reading_seconds = 0;
   /// Largest number of field values held at once (the buffers of all slab slots).
+  /// `extraction_seconds` is the wall time of the whole pipeline here.
   std::size_t peak_field_values = 0;
 };
 
@@ -95,9 +99,11 @@ struct Boolean_isosurface_slab_statistics : Boolean_isosurface_statistics
 /// TBISO on a regular grid whose fields are read from `source` one slab of
 /// `slab_layers` cube layers at a time (plus one ghost vertex layer on each
 /// side: the apex of a neighbouring tetrahedron may lie there).  Under
-/// `Parallel_tag` up to `slabs_in_flight` slabs (default: the number of
-/// hardware threads) are read and evaluated at once; they are welded and
-/// passed to `sink` in slab order, so the output does not depend on the tag.
+/// `Parallel_tag` the slabs go through a pipeline: read in order (one file,
+/// read sequentially), evaluated in parallel, welded and passed to `sink` in
+/// slab order, with at most `slabs_in_flight` slabs in memory (default: twice
+/// the number of hardware threads, so that reading overlaps evaluation).  The
+/// output does not depend on the tag.
 /// Each slab slot keeps its buffer from one window to the next: allocating
 /// (and first touching) a fresh buffer per slab cost more than reading the
 /// file, on the virtual machine this was measured on.
@@ -143,94 +149,131 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   stats.number_of_slabs = number_of_slabs;
   if(slabs_in_flight == 0)
     slabs_in_flight = internal::is_parallel_tag<ConcurrencyTag>()
-                          ? std::max<std::size_t>(1, std::thread::hardware_concurrency())
+                          ? 2 * std::max<std::size_t>(1, std::thread::hardware_concurrency())
                           : 1;
-  std::vector<std::vector<double>> buffers(slabs_in_flight);
-  for(std::vector<double>& b : buffers)
-    b.reserve((std::min(slab, layers) + 3) * layer_size * N);
 
-  std::mutex source_mutex;
+  // One slot per slab in flight: slab s uses slot s % slabs_in_flight.
+  struct Slot
+  {
+    std::size_t slab = 0;
+    std::vector<double> values;
+    internal::Tbiso_chunk chunk;
+  };
+  std::vector<Slot> slots(slabs_in_flight);
+  for(Slot& slot : slots)
+    slot.values.reserve((std::min(slab, layers) + 3) * layer_size * N);
+
+  // The three stages: read (in slab order: one file, read sequentially),
+  // evaluate (any order, in parallel), weld and emit (in slab order).
+  auto read = [&](Slot& slot) {
+    const std::size_t s = slot.slab;
+    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+    const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
+    const std::size_t last_layer = std::min(n[2] - 1, k_end + 1);
+    const auto read_start = std::chrono::steady_clock::now();
+    source.read(first_layer * layer_size, (last_layer - first_layer + 1) * layer_size, slot.values);
+    stats.reading_seconds += internal::seconds_since(read_start);
+    std::size_t held = 0;
+    for(const Slot& other : slots)
+      held += other.values.capacity();
+    stats.peak_field_values = std::max(stats.peak_field_values, held);
+  };
+  auto evaluate = [&](Slot& slot) {
+    const std::size_t s = slot.slab;
+    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+    const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
+    for(std::size_t k = 0; k < slot.values.size(); ++k)
+      if(!std::isfinite(slot.values[k]))
+        throw Non_finite_value_error("field " + std::to_string(k % N) + " has a non-finite value at vertex " +
+                                     std::to_string(first_layer * layer_size + k / N));
+    slot.chunk = internal::Tbiso_chunk();
+    internal::extract_grid_slab(grid, slot.values.data(), first_layer * layer_size, N, prototype, k_begin, k_end,
+                                slot.chunk);
+  };
   std::unordered_map<internal::Tbiso_vertex_key, std::size_t, internal::Tbiso_vertex_key_hash> below, above;
   std::size_t next_index = 0;
   std::vector<std::size_t> to_global, polygon;
-  for(std::size_t w0 = 0; w0 < number_of_slabs; w0 += slabs_in_flight)
-  {
-    const std::size_t w1 = std::min(number_of_slabs, w0 + slabs_in_flight);
-    std::vector<internal::Tbiso_chunk> chunks(w1 - w0);
-    std::vector<double> read_seconds(w1 - w0, 0.);
-    start = std::chrono::steady_clock::now();
-    internal::concurrent_for<ConcurrencyTag>(w1 - w0, [&](std::size_t t) {
-      const std::size_t s = w0 + t;
-      const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
-      const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
-      const std::size_t last_layer = std::min(n[2] - 1, k_end + 1);
-      std::vector<double>& values = buffers[t];
-      const auto read_start = std::chrono::steady_clock::now();
-      {
-        std::lock_guard<std::mutex> lock(source_mutex);
-        source.read(first_layer * layer_size, (last_layer - first_layer + 1) * layer_size, values);
-      }
-      read_seconds[t] = internal::seconds_since(read_start);
-      for(std::size_t k = 0; k < values.size(); ++k)
-        if(!std::isfinite(values[k]))
-          throw Non_finite_value_error("field " + std::to_string(k % N) + " has a non-finite value at vertex " +
-                                       std::to_string(first_layer * layer_size + k / N));
-      internal::extract_grid_slab(grid, values.data(), first_layer * layer_size, N, prototype, k_begin, k_end,
-                                  chunks[t]);
-    });
-    stats.extraction_seconds += internal::seconds_since(start);
-    for(std::size_t t = 0; t < w1 - w0; ++t)
+  auto weld = [&](Slot& slot) {
+    const auto weld_start = std::chrono::steady_clock::now();
+    const std::size_t s = slot.slab;
+    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+    internal::Tbiso_chunk& chunk = slot.chunk;
+    stats.number_of_evaluated_tetrahedra += chunk.evaluated;
+    chunk.index.clear();
+    above.clear();
+    to_global.resize(chunk.keys.size());
+    for(std::size_t v = 0; v < chunk.keys.size(); ++v)
     {
-      stats.reading_seconds += read_seconds[t];
-      stats.number_of_evaluated_tetrahedra += chunks[t].evaluated;
-    }
-    std::size_t held = 0;
-    for(const std::vector<double>& b : buffers)
-      held += b.capacity();
-    stats.peak_field_values = std::max(stats.peak_field_values, held);
-
-    // Weld and emit, in slab order.
-    start = std::chrono::steady_clock::now();
-    for(std::size_t t = 0; t < w1 - w0; ++t)
-    {
-      const std::size_t s = w0 + t;
-      const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
-      internal::Tbiso_chunk& chunk = chunks[t];
-      chunk.index.clear();
-      above.clear();
-      to_global.resize(chunk.keys.size());
-      for(std::size_t v = 0; v < chunk.keys.size(); ++v)
+      const std::size_t z = internal::shared_layer(chunk.keys[v], layer_size, slab);
+      if(z == k_begin && s > 0)
       {
-        const std::size_t z = internal::shared_layer(chunk.keys[v], layer_size, slab);
-        if(z == k_begin && s > 0)
+        auto found = below.find(chunk.keys[v]);
+        if(found != below.end())
         {
-          auto found = below.find(chunk.keys[v]);
-          if(found != below.end())
-          {
-            to_global[v] = found->second;
-            continue;
-          }
+          to_global[v] = found->second;
+          continue;
         }
-        to_global[v] = next_index++;
-        sink.add_point(chunk.points[v]);
-        if(z == k_end)
-          above.emplace(chunk.keys[v], to_global[v]);
       }
-      for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
-      {
-        polygon.clear();
-        for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
-          polygon.push_back(to_global[chunk.polygon_vertices[k]]);
-        sink.add_polygon(polygon.data(), polygon.size(), chunk.labels[p]);
-        ++stats.number_of_polygons;
-      }
-      below.swap(above);
-      chunk = internal::Tbiso_chunk();
+      to_global[v] = next_index++;
+      sink.add_point(chunk.points[v]);
+      if(z == k_end)
+        above.emplace(chunk.keys[v], to_global[v]);
     }
-    stats.welding_seconds += internal::seconds_since(start);
+    for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
+    {
+      polygon.clear();
+      for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
+        polygon.push_back(to_global[chunk.polygon_vertices[k]]);
+      sink.add_polygon(polygon.data(), polygon.size(), chunk.labels[p]);
+      ++stats.number_of_polygons;
+    }
+    below.swap(above);
+    chunk = internal::Tbiso_chunk();
+    stats.welding_seconds += internal::seconds_since(weld_start);
     if(progress)
-      progress(double(w1) / double(number_of_slabs));
+      progress(double(s + 1) / double(number_of_slabs));
+  };
+
+  start = std::chrono::steady_clock::now();
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(internal::is_parallel_tag<ConcurrencyTag>())
+  {
+    std::size_t next_slab = 0;
+    tbb::parallel_pipeline(
+        slabs_in_flight,
+        tbb::make_filter<void, Slot*>(tbb::filter_mode::serial_in_order,
+                                      [&](tbb::flow_control& control) -> Slot* {
+                                        if(next_slab == number_of_slabs)
+                                        {
+                                          control.stop();
+                                          return nullptr;
+                                        }
+                                        // Tokens finish in order, so slab s - slabs_in_flight is done.
+                                        Slot& slot = slots[next_slab % slabs_in_flight];
+                                        slot.slab = next_slab++;
+                                        read(slot);
+                                        return &slot;
+                                      }) &
+            tbb::make_filter<Slot*, Slot*>(tbb::filter_mode::parallel,
+                                           [&](Slot* slot) {
+                                             evaluate(*slot);
+                                             return slot;
+                                           }) &
+            tbb::make_filter<Slot*, void>(tbb::filter_mode::serial_in_order, [&](Slot* slot) { weld(*slot); }));
   }
+  else
+#endif
+  {
+    for(std::size_t s = 0; s < number_of_slabs; ++s)
+    {
+      Slot& slot = slots[0];
+      slot.slab = s;
+      read(slot);
+      evaluate(slot);
+      weld(slot);
+    }
+  }
+  stats.extraction_seconds = internal::seconds_since(start);
   stats.number_of_vertices = next_index;
   return stats;
 }
