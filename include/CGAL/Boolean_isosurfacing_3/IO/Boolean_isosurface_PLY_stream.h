@@ -52,7 +52,7 @@ public:
   void add_point(const std::array<double, 3>& p)
   {
     for(double c : p)
-      internal::soup_files_io::put_little_endian(m_buffer, c);
+      CGAL::Boolean_isosurfacing::internal::put_little_endian(m_buffer, c);
     ++m_vertices;
     flush(m_out, m_buffer);
   }
@@ -61,16 +61,16 @@ public:
   {
     if(n > 255)
       throw Invalid_input_error("a polygon of " + std::to_string(n) + " vertices does not fit a PLY uchar list");
-    internal::soup_files_io::put_little_endian(m_face_buffer, static_cast<std::uint8_t>(n));
+    CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::uint8_t>(n));
     for(std::size_t k = 0; k < n; ++k)
     {
       if(v[k] > std::size_t((std::numeric_limits<std::int32_t>::max)()))
         throw Invalid_input_error("too many points for PLY int indices");
-      internal::soup_files_io::put_little_endian(m_face_buffer, static_cast<std::int32_t>(v[k]));
+      CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::int32_t>(v[k]));
     }
-    internal::soup_files_io::put_little_endian(m_face_buffer, static_cast<std::int32_t>(field));
+    CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::int32_t>(field));
     for(unsigned char c : field_color(field))
-      internal::soup_files_io::put_little_endian(m_face_buffer, static_cast<std::uint8_t>(c));
+      CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::uint8_t>(c));
     ++m_polygons;
     flush(m_faces, m_face_buffer);
   }

@@ -49,6 +49,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Byte_order.h>
 
 #include <CGAL/number_utils.h>
 
@@ -96,24 +97,8 @@ inline std::array<unsigned char, 3> field_color(int field)
 namespace internal {
 namespace soup_files_io {
 
-inline bool host_is_little_endian()
-{
-  const std::uint32_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
-
-// Appends the little-endian bytes of `value` to `out`.
-template <typename T>
-void put_little_endian(std::string& out, T value)
-{
-  char b[sizeof(T)];
-  std::memcpy(b, &value, sizeof(T));
-  if(!host_is_little_endian())
-    std::reverse(b, b + sizeof(T));
-  out.append(b, sizeof(T));
-}
+using CGAL::Boolean_isosurfacing::internal::host_is_little_endian;
+using CGAL::Boolean_isosurfacing::internal::put_little_endian;
 
 // Restores, on destruction, the locale and precision of a stream set up for
 // exact, locale-independent numbers.

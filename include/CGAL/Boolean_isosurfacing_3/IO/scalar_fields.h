@@ -43,6 +43,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Scalar_fields.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Byte_order.h>
 
 #include <algorithm>
 #include <cctype>
@@ -85,27 +86,8 @@ namespace scalar_fields_io {
 static_assert(sizeof(double) == 8 && std::numeric_limits<double>::is_iec559, "double must be IEEE 754 binary64");
 static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559, "float must be IEEE 754 binary32");
 
-inline bool host_is_little_endian()
-{
-  const std::uint32_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
-
-// The files are little-endian: on a big-endian host, reverse the bytes of
-// every value (a no-op on x86 and ARM).
-template <typename T>
-void little_endian_to_host(T* values, std::size_t n)
-{
-  if(host_is_little_endian())
-    return;
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    unsigned char* b = reinterpret_cast<unsigned char*>(values + k);
-    std::reverse(b, b + sizeof(T));
-  }
-}
+using CGAL::Boolean_isosurfacing::internal::host_is_little_endian;
+using CGAL::Boolean_isosurfacing::internal::little_endian_to_host;
 
 inline const char* type_name(Raw_scalar_type type)
 {
@@ -159,16 +141,7 @@ inline void check_finite_for_writing(const Scalar_fields& fields, const std::str
       throw_non_finite(filename, k / N, k % N, data[k]);
 }
 
-inline bool ends_with(const std::string& s, const char* suffix)
-{
-  const std::size_t n = std::strlen(suffix);
-  if(s.size() < n)
-    return false;
-  for(std::size_t k = 0; k < n; ++k)
-    if(std::tolower(static_cast<unsigned char>(s[s.size() - n + k])) != suffix[k])
-      return false;
-  return true;
-}
+inline bool ends_with(const std::string& s, const char* suffix) { return CGAL::Boolean_isosurfacing::internal::ends_with_lowercase(s, suffix); }
 
 } // namespace scalar_fields_io
 } // namespace internal

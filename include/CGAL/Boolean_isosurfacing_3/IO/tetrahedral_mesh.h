@@ -51,6 +51,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Byte_order.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
@@ -233,7 +234,7 @@ inline void open_for_reading(std::ifstream& in, const std::string& path)
 
 inline bool ends_with(const std::string& s, const std::string& suffix)
 {
-  return s.size() >= suffix.size() && lower(s.substr(s.size() - suffix.size())) == suffix;
+  return CGAL::Boolean_isosurfacing::internal::ends_with_lowercase(s, suffix);
 }
 
 // `n` in a "Keyword n" pair, on the keyword's line or alone on the next one.
