@@ -576,3 +576,36 @@ TEST(BooleanIsosurface, NonConformingTetrahedralMeshIsRejected)
   EXPECT_THROW(BI::Tetrahedral_mesh_3<K>(p, {{0, 1, 2, 9}}), BI::Invalid_input_error);
   EXPECT_THROW(BI::Tetrahedral_mesh_3<K>(p, {}), BI::Empty_input_error);
 }
+
+// Seven fields: a cube as six half-spaces, minus a ball inside it.  The cube
+// is exact (linear fields), the ball converges; the crease network is the
+// cube's 12 edges between its 8 corners, whatever the resolution.
+TEST(BooleanIsosurface, SevenFieldsCubeMinusBall)
+{
+  const double a = 0.45, r = 0.3;
+  const std::vector<Field> f{plane(-1, 0, 0, -a), plane(1, 0, 0, -a), plane(0, -1, 0, -a), plane(0, 1, 0, -a),
+                             plane(0, 0, -1, -a), plane(0, 0, 1, -a), sphere(0.02, -0.01, 0.015, r)};
+  const double exact = 8 * a * a * a - 4 * pi * r * r * r / 3;
+  double previous = 1e9;
+  for(std::size_t n : {17, 33, 65})
+  {
+    const Soup s = extract(unit_grid(n), f, "f0 & f1 & f2 & f3 & f4 & f5 & !f6", false);
+    ASSERT_TRUE(is_closed_oriented_manifold(s)) << n;
+    const double error = std::abs(volume(s) - exact) / exact;
+    EXPECT_LT(error, previous / 3) << n;
+    previous = error;
+    const BI::Crease_network net = BI::extract_crease_network(s);
+    EXPECT_EQ(net.corners.size(), 8u) << n;
+    EXPECT_EQ(net.polylines.size(), 12u) << n;
+    for(std::size_t c : net.corners)
+    {
+      const Point& p = s.points[c];
+      EXPECT_NEAR(std::abs(p.x()), a, 1e-15);
+      EXPECT_NEAR(std::abs(p.y()), a, 1e-15);
+      EXPECT_NEAR(std::abs(p.z()), a, 1e-15);
+    }
+    for(std::size_t p = 0; p < s.polygons.size(); ++p)
+      EXPECT_TRUE(s.face_fields[p] >= 0 && s.face_fields[p] <= 6);
+  }
+  EXPECT_LT(previous, 2e-3);
+}
