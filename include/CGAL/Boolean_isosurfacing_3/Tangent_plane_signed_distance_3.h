@@ -23,7 +23,9 @@
 //  3. orientation: flip each n_i towards the input normal of x_i when the
 //     input has normals; otherwise Hoppe's propagation along a minimum
 //     spanning forest (Boost Graph, Kruskal) of the symmetric k-NN graph with
-//     weights 1 - |n_i . n_j|, each tree rooted at its sample of largest z
+//     weights 1 - |n_i . n_j| + min(|n_i . e_ij|, |n_j . e_ij|) (e_ij the unit
+//     edge direction: the second term keeps the tree from crossing thin
+//     walls, see orient_by_minimum_spanning_forest), each tree rooted at its sample of largest z
 //     whose normal is forced to +z (the top of a closed surface faces up).
 
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
@@ -380,9 +382,28 @@ private:
       }
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    // Weight 1 - |n_i . n_j| (Hoppe), plus min(|n_i . e|, |n_j . e|) for the
+    // unit edge direction e: across a wall thinner than a neighbourhood (the
+    // sockets of distcap.pts) the k-NN graph joins the two sides, whose planes
+    // are parallel (Hoppe's weight ~0, so the tree prefers these edges) but
+    // whose normals must be *opposite*; such an edge runs along both normals.
+    // Along the surface, and across a sharp edge, at least one normal is
+    // nearly orthogonal to the edge, so the term stays small there.  Measured
+    // on distcap: chi -252 -> -15 with the default parameters, and 717 -> 664
+    // neighbour pairs with n_i . n_j < -0.9 (the rest are the two sides of the
+    // walls, correctly opposite).
     std::vector<double> weights(pairs.size());
     for(std::size_t e = 0; e < pairs.size(); ++e)
-      weights[e] = 1.0 - std::abs(CGAL::to_double(m_normals[pairs[e].first] * m_normals[pairs[e].second]));
+    {
+      const Vector_3& ni = m_normals[pairs[e].first];
+      const Vector_3& nj = m_normals[pairs[e].second];
+      double w = 1.0 - std::abs(CGAL::to_double(ni * nj));
+      const Vector_3 d = m_points[pairs[e].second] - m_points[pairs[e].first];
+      const double length = std::sqrt(CGAL::to_double(d * d));
+      if(length > 0)
+        w += (std::min)(std::abs(CGAL::to_double(ni * d)), std::abs(CGAL::to_double(nj * d))) / length;
+      weights[e] = w;
+    }
     Graph graph(pairs.begin(), pairs.end(), weights.begin(), n);
     std::vector<Edge> tree_edges;
     boost::kruskal_minimum_spanning_tree(graph, std::back_inserter(tree_edges));
