@@ -125,7 +125,7 @@ void tables(benchmark::State& state, int n)
   for(auto _ : state)
   {
     const BI::Boolean_expression e = BI::Boolean_expression::parse(text);
-    const BI::internal::Tbiso_tetrahedron_evaluator evaluator(e, std::size_t(n), false);
+    const BI::internal::Tbiso_tetrahedron_evaluator evaluator(e, false);
     benchmark::DoNotOptimize(&evaluator);
   }
 }

@@ -145,8 +145,6 @@ struct Marching_tetrahedra
             const Point& b = points[poly[1]];
             const Point& c = points[poly[2]];
             const K::Vector_3 normal = CGAL::cross_product(b - a, c - a);
-            K::Vector_3 gradient(0, 0, 0);
-            const auto p0 = g.position(tet[0]);
             double centroid[3] = {0, 0, 0};
             for(std::size_t q : poly)
             {
@@ -157,8 +155,6 @@ struct Marching_tetrahedra
             // The direction from the polygon to an outside corner.
             const auto po = g.position(tet[out[0]]);
             const K::Vector_3 to_out(po[0] - centroid[0], po[1] - centroid[1], po[2] - centroid[2]);
-            (void)p0;
-            (void)gradient;
             if(normal * to_out < 0)
               std::reverse(poly.begin(), poly.end());
             polygons.push_back(poly);

@@ -66,7 +66,10 @@ struct Tbiso_chunk
   std::size_t evaluated = 0;
   std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> index;
 
-  void add(int label, const Tbiso_tetrahedron_evaluator::Vertex* v, std::size_t n)
+  // Called from inside the evaluator's `emit`: coordinates are computed only
+  // for a key seen for the first time (a vertex is met by about 6 polygons).
+  void add(int label, const Tbiso_tetrahedron_evaluator::Vertex* v, std::size_t n,
+           const Tbiso_tetrahedron_evaluator& evaluator)
   {
     for(std::size_t k = 0; k < n; ++k)
     {
@@ -74,7 +77,7 @@ struct Tbiso_chunk
       if(inserted.second)
       {
         keys.push_back(v[k].key);
-        points.push_back(v[k].point);
+        points.push_back(evaluator.point(v[k]));
       }
       polygon_vertices.push_back(inserted.first->second);
     }
@@ -231,7 +234,7 @@ void extract_grid_slab(const Tetrahedral_grid_3<GeomTraits>& grid, const double*
                 }
                 return a;
               },
-              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count); });
+              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count, evaluator); });
         }
       }
   }
@@ -315,7 +318,7 @@ extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Sca
   Boolean_isosurface_statistics stats;
   stats.number_of_tetrahedra = grid.number_of_tetrahedra();
   auto start = std::chrono::steady_clock::now();
-  const Evaluator prototype(expression, fields.number_of_fields(), close);
+  const Evaluator prototype(expression, close);
   stats.table_seconds = internal::seconds_since(start);
 
   const std::array<std::size_t, 3>& n = grid.vertex_counts();
@@ -375,7 +378,7 @@ extract_boolean_isosurface(const Tetrahedral_mesh_3<GeomTraits>& mesh, const Sca
   Boolean_isosurface_statistics stats;
   stats.number_of_tetrahedra = mesh.number_of_tetrahedra();
   auto start = std::chrono::steady_clock::now();
-  const Evaluator prototype(expression, fields.number_of_fields(), close);
+  const Evaluator prototype(expression, close);
   const std::uint64_t expression_fields = prototype.expression_fields();
   stats.table_seconds = internal::seconds_since(start);
 
@@ -432,7 +435,7 @@ extract_boolean_isosurface(const Tetrahedral_mesh_3<GeomTraits>& mesh, const Sca
                 }
                 return a;
               },
-              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count); });
+              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count, evaluator); });
         }
       },
       internal::Progress(progress_callback));

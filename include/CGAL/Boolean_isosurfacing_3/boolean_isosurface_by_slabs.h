@@ -140,7 +140,7 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   Boolean_isosurface_slab_statistics stats;
   stats.number_of_tetrahedra = grid.number_of_tetrahedra();
   auto start = std::chrono::steady_clock::now();
-  const Evaluator prototype(expression, N, close);
+  const Evaluator prototype(expression, close);
   stats.table_seconds = internal::seconds_since(start);
 
   const std::array<std::size_t, 3>& n = grid.vertex_counts();

@@ -269,6 +269,22 @@ inline void next_record(Line_reader& r, const char* element, const char* element
 // allocate gigabytes before the file proves it has the records.
 constexpr std::size_t max_reserve = std::size_t(1) << 22;
 
+// TetGen numbers its records from 0 or 1 (the first record decides, and sets
+// `base`), consecutively.
+inline void check_record_number(Line_reader& r, const char* what, std::size_t k, std::size_t& base)
+{
+  const std::size_t i = r.index(0);
+  if(k == 0)
+  {
+    if(i > 1)
+      r.fail(std::string("the first ") + what + " number must be 0 or 1, found " + std::to_string(i));
+    base = i;
+  }
+  else if(i != base + k)
+    r.fail(std::string("expected ") + what + " number " + std::to_string(base + k) + ", found " + std::to_string(i) +
+           " (" + what + " numbers must be consecutive)");
+}
+
 } // namespace tet_mesh_io
 } // namespace internal
 
@@ -446,16 +462,7 @@ Tetrahedral_mesh_3<GeomTraits> read_TetGen(std::istream& node, std::istream& ele
   for(std::size_t k = 0; k < n; ++k)
   {
     next_record(r, "vertex", "vertices", k, n, 4 + nattr + nbm, "i x y z [attributes] [marker]");
-    const std::size_t i = r.index(0);
-    if(k == 0)
-    {
-      if(i > 1)
-        r.fail("the first vertex number must be 0 or 1, found " + std::to_string(i));
-      base = i;
-    }
-    else if(i != base + k)
-      r.fail("expected vertex number " + std::to_string(base + k) + ", found " + std::to_string(i) +
-             " (vertex numbers must be consecutive)");
+    check_record_number(r, "vertex", k, base);
     const double x = r.coordinate(1), y = r.coordinate(2), z = r.coordinate(3);
     for(std::size_t a = 4; a < r.size(); ++a)
       r.number(a); // attributes and marker: checked, ignored
@@ -486,16 +493,7 @@ Tetrahedral_mesh_3<GeomTraits> read_TetGen(std::istream& node, std::istream& ele
   for(std::size_t k = 0; k < m; ++k)
   {
     next_record(e, "tetrahedron", "tetrahedra", k, m, 1 + npt + eattr, "j a b c d [attributes]");
-    const std::size_t j = e.index(0);
-    if(k == 0)
-    {
-      if(j > 1)
-        e.fail("the first tetrahedron number must be 0 or 1, found " + std::to_string(j));
-      element_base = j;
-    }
-    else if(j != element_base + k)
-      e.fail("expected tetrahedron number " + std::to_string(element_base + k) + ", found " + std::to_string(j) +
-             " (tetrahedron numbers must be consecutive)");
+    check_record_number(e, "tetrahedron", k, element_base);
     Tetrahedron t;
     for(std::size_t l = 0; l < npt; ++l)
     {

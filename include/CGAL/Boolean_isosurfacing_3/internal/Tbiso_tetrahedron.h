@@ -117,11 +117,12 @@ inline void field_sign_masks(const double* values, std::uint64_t fields, std::ui
 class Tbiso_tetrahedron_evaluator
 {
 public:
-  /// An output polygon vertex.
+  /// An output polygon vertex: its key, and its carrier as corners of the
+  /// tetrahedron being evaluated (see `point()`).
   struct Vertex
   {
     Tbiso_vertex_key key;
-    std::array<double, 3> point;
+    std::uint8_t carrier;
   };
 
   /// Sign masks of the fields at the apex of the neighbour across a face.
@@ -131,9 +132,8 @@ public:
     std::uint64_t negative, positive;
   };
 
-  Tbiso_tetrahedron_evaluator(const Boolean_expression& expression, std::size_t number_of_fields,
-                              bool close_at_domain_boundary)
-    : m_fields(expression.support()), m_number_of_fields(number_of_fields), m_close(close_at_domain_boundary)
+  Tbiso_tetrahedron_evaluator(const Boolean_expression& expression, bool close_at_domain_boundary)
+    : m_fields(expression.support()), m_close(close_at_domain_boundary)
   {
     for(const Boolean_term& t : expression.terms())
       m_terms.push_back(Sign_term{t.pos, t.neg}); // `pos` = inside = f < 0
@@ -238,6 +238,81 @@ public:
       tetrahedron_face_faces(l, vanishing, a, emit);
     }
   }
+
+  /// The coordinates of `v`, in double, from its key alone (so that they do
+  /// not depend on which tetrahedron met the vertex first): the carrier
+  /// corners in increasing global index and the lowest vanishing fields that
+  /// define the point, i.e. whose system with the carrier is regular.  Valid
+  /// only inside the `emit` callback of `evaluate_tetrahedron()`, and called by
+  /// the drivers only for a vertex they have not seen yet.
+  std::array<double, 3> point(const Vertex& v) const
+  {
+    const std::array<Tbiso_corner, 4>& corner = *m_corner;
+    int carrier_columns[4];
+    int cm = 0;
+    for(int c = 0; c < 4; ++c)
+      if((v.carrier >> c) & 1)
+        carrier_columns[cm++] = c;
+    if(cm == 1)
+      return corner[carrier_columns[0]].position;
+    std::array<double, 3> point;
+    std::sort(carrier_columns, carrier_columns + cm,
+              [&](int x, int y) { return corner[x].id < corner[y].id; });
+    int chosen[3];
+    if(!choose_defining_fields(carrier_columns, cm, v.key.zero_fields, chosen, 0, 0))
+      CGAL_assertion_msg(false, "a TBISO vertex is not defined by its vanishing fields");
+    if(cm == 2)
+    {
+      // The seed's interpolation t = -f_a / (f_b - f_a), from the lower index.
+      const int a = carrier_columns[0], b = carrier_columns[1];
+      const double fa = field_value(a, chosen[0]), fb = field_value(b, chosen[0]);
+      const double t = -fa / (fb - fa);
+      for(int x = 0; x < 3; ++x)
+        point[x] = corner[a].position[x] + t * (corner[b].position[x] - corner[a].position[x]);
+      return point;
+    }
+    // Solve [F; 1] lambda = (0, .., 0, 1) by Gauss-Jordan with partial pivoting.
+    double A[4][5];
+    for(int row = 0; row + 1 < cm; ++row)
+    {
+      for(int k = 0; k < cm; ++k)
+        A[row][k] = field_value(carrier_columns[k], chosen[row]);
+      A[row][cm] = 0;
+    }
+    for(int k = 0; k < cm; ++k)
+      A[cm - 1][k] = 1;
+    A[cm - 1][cm] = 1;
+    for(int col = 0; col < cm; ++col)
+    {
+      int pivot = col;
+      for(int row = col + 1; row < cm; ++row)
+        if(std::abs(A[row][col]) > std::abs(A[pivot][col]))
+          pivot = row;
+      for(int k = 0; k <= cm; ++k)
+        std::swap(A[col][k], A[pivot][k]);
+      for(int row = 0; row < cm; ++row)
+        if(row != col && A[col][col] != 0)
+        {
+          const double factor = A[row][col] / A[col][col];
+          for(int k = col; k <= cm; ++k)
+            A[row][k] -= factor * A[col][k];
+        }
+    }
+    double lambda[4] = {0, 0, 0, 0};
+    double total = 0;
+    for(int k = 0; k < cm; ++k)
+    {
+      // The point is inside its carrier: clamping only removes rounding.
+      lambda[k] = std::min(1., std::max(0., A[k][cm] / A[k][k]));
+      total += lambda[k];
+    }
+    point = {0, 0, 0};
+    for(int k = 0; k < cm; ++k)
+      for(int x = 0; x < 3; ++x)
+        point[x] += lambda[k] / total * corner[carrier_columns[k]].position[x];
+    return point;
+  }
+
 
 private:
   // A point of the tetrahedron (see the header comment).
@@ -585,15 +660,12 @@ private:
       if((carrier >> c) & 1)
         carrier_columns[cm++] = c;
     CGAL_assertion(cm >= 1);
+    out.carrier = carrier;
     for(int k = 0; k < cm; ++k)
       out.key.corners[k] = corner[carrier_columns[k]].id;
     std::sort(out.key.corners.begin(), out.key.corners.begin() + cm);
-
     if(cm == 1)
-    {
-      out.point = corner[carrier_columns[0]].position;
       return out;
-    }
 
     // Fields vanishing at the point: only those not of one strict sign on the carrier can.
     std::uint64_t candidates = 0;
@@ -619,65 +691,6 @@ private:
         zero_fields |= std::uint64_t(1) << i;
     }
     out.key.zero_fields = zero_fields;
-
-    // Coordinates, in double, from the key alone (so that they do not depend
-    // on which tetrahedron met the vertex first): the carrier corners in
-    // increasing global index and the lowest vanishing fields that define the
-    // point, i.e. whose system with the carrier is regular.
-    std::sort(carrier_columns, carrier_columns + cm,
-              [&](int x, int y) { return corner[x].id < corner[y].id; });
-    int chosen[3];
-    if(!choose_defining_fields(carrier_columns, cm, zero_fields, chosen, 0, 0))
-      CGAL_assertion_msg(false, "a TBISO vertex is not defined by its vanishing fields");
-    if(cm == 2)
-    {
-      // The seed's interpolation t = -f_a / (f_b - f_a), from the lower index.
-      const int a = carrier_columns[0], b = carrier_columns[1];
-      const double fa = field_value(a, chosen[0]), fb = field_value(b, chosen[0]);
-      const double t = -fa / (fb - fa);
-      for(int x = 0; x < 3; ++x)
-        out.point[x] = corner[a].position[x] + t * (corner[b].position[x] - corner[a].position[x]);
-      return out;
-    }
-    // Solve [F; 1] lambda = (0, .., 0, 1) by Gauss-Jordan with partial pivoting.
-    double A[4][5];
-    for(int row = 0; row + 1 < cm; ++row)
-    {
-      for(int k = 0; k < cm; ++k)
-        A[row][k] = field_value(carrier_columns[k], chosen[row]);
-      A[row][cm] = 0;
-    }
-    for(int k = 0; k < cm; ++k)
-      A[cm - 1][k] = 1;
-    A[cm - 1][cm] = 1;
-    for(int col = 0; col < cm; ++col)
-    {
-      int pivot = col;
-      for(int row = col + 1; row < cm; ++row)
-        if(std::abs(A[row][col]) > std::abs(A[pivot][col]))
-          pivot = row;
-      for(int k = 0; k <= cm; ++k)
-        std::swap(A[col][k], A[pivot][k]);
-      for(int row = 0; row < cm; ++row)
-        if(row != col && A[col][col] != 0)
-        {
-          const double factor = A[row][col] / A[col][col];
-          for(int k = col; k <= cm; ++k)
-            A[row][k] -= factor * A[col][k];
-        }
-    }
-    double lambda[4] = {0, 0, 0, 0};
-    double total = 0;
-    for(int k = 0; k < cm; ++k)
-    {
-      // The point is inside its carrier: clamping only removes rounding.
-      lambda[k] = std::min(1., std::max(0., A[k][cm] / A[k][k]));
-      total += lambda[k];
-    }
-    out.point = {0, 0, 0};
-    for(int k = 0; k < cm; ++k)
-      for(int x = 0; x < 3; ++x)
-        out.point[x] += lambda[k] / total * corner[carrier_columns[k]].position[x];
     return out;
   }
 
@@ -688,6 +701,8 @@ private:
   {
     if(depth == cm - 1)
     {
+      if(cm == 2) // det[f_a f_b; 1 1] = f_a - f_b: an exact comparison
+        return field_value(columns[0], chosen[0]) != field_value(columns[1], chosen[0]);
       double den[16];
       for(int row = 0; row < depth; ++row)
         for(int k = 0; k < cm; ++k)
@@ -854,7 +869,6 @@ private:
   }
 
   std::uint64_t m_fields;
-  std::size_t m_number_of_fields;
   bool m_close;
   std::vector<Sign_term> m_terms;
 
