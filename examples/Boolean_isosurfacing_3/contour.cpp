@@ -168,11 +168,19 @@ int main(int argc, char** argv)
         field = &build(base);
     }
 
+    if(field->input_normals_rejected())
+    {
+      const auto votes = field->input_normal_votes();
+      std::cerr << "warning: the input normals do not point outward (the extreme samples of " << votes.second
+                << " of " << votes.first
+                << " directions face inward); their signs are ignored and the planes are oriented as without normals\n";
+    }
+
     std::vector<Point_3> out_points;
     std::vector<std::array<std::size_t, 3>> triangles;
     BI::Contouring_report report;
     // The cell size first (it scales the jump bound), then contour.
-    double cell = field->sampling_density() / 3;
+    double cell = field->default_cell_size();
     if(options.cell)
       cell = *options.cell;
     else if(options.cells)
@@ -197,17 +205,19 @@ int main(int argc, char** argv)
               << " cells)\n";
     std::cout << "time read:          " << read_seconds << " s\n"
               << "time k-NN:          " << t.neighbors << " s\n"
-              << "time PCA:           " << t.planes << " s\n"
+              << "time PCA:           " << t.planes << " s (" << field->number_of_trimmed_neighbourhoods()
+              << " neighbourhoods trimmed to one sheet)\n"
               << "time orientation:   " << t.orientation << " s"
-              << (field->has_input_normals() ? " (from input normals)" : " (minimum spanning forest, " +
-                                                                            std::to_string(field->number_of_orientation_trees()) +
-                                                                            " tree(s))")
+              << (field->has_input_normals() && !field->input_normals_rejected()
+                    ? std::string(" (from input normals)")
+                    : " (minimum spanning forest, " + std::to_string(field->number_of_orientation_trees()) + " tree(s))")
               << "\n"
               << "time distance field: " << report.field_seconds << " s (" << report.field_evaluations
               << " lattice points, " << report.undefined_points << " undefined)\n"
               << "time contouring:    " << report.contouring_seconds << " s (" << report.visited_cubes
               << " cubes visited, " << report.surface_cubes << " crossed, " << report.skipped_cubes
-              << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, " << report.discontinuous_cubes << " skipped for a jump of f)\n";
+              << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, " << report.discontinuous_cubes << " skipped for a jump of f, "
+              << report.removed_closed_components << " closed pieces smaller than rho removed)\n";
     std::cout << "triangles: " << triangles.size() << ", vertices: " << out_points.size() << "\n";
 
     if(!options.output.empty())

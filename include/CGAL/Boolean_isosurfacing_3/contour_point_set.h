@@ -50,6 +50,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -73,6 +74,7 @@ struct Contouring_report
   std::size_t ambiguous_faces = 0;               ///< (counted once per cube side)
   std::size_t joined_faces = 0;                  ///< ... where the decider joined the inside
   std::size_t centre_vertices = 0;
+  std::size_t removed_closed_components = 0;     ///< bubbles smaller than minimum_closed_component_size
   std::size_t number_of_vertices = 0, number_of_triangles = 0;
   double field_seconds = 0;                      ///< evaluating f at lattice points
   double contouring_seconds = 0;                 ///< traversal + triangles, without field time
@@ -154,7 +156,132 @@ inline unsigned asymptotic_decider_mask(const std::array<double, 8>& values, uns
   return mask;
 }
 
+/// The field's `default_cell_size()` if it has one, else sampling_density() / 3.
+template <typename Field, typename = void>
+struct Has_default_cell_size : std::false_type
+{};
+template <typename Field>
+struct Has_default_cell_size<Field, std::void_t<decltype(std::declval<const Field&>().default_cell_size())>>
+  : std::true_type
+{};
+
+template <typename Field>
+double default_cell_size(const Field& field)
+{
+  if constexpr(Has_default_cell_size<Field>::value)
+    return double(field.default_cell_size());
+  else
+    return double(field.sampling_density()) / 3;
+}
+
+/// Removes, from the triangles appended from `first_triangle` on (whose
+/// vertices are the points from `first_vertex` on), every connected component
+/// that is closed (each of its edges in exactly 2 of its triangles) and whose
+/// bounding box has a diagonal below `min_diagonal`.  Returns how many.
+template <typename PointOutRange, typename TriangleRange>
+std::size_t remove_small_closed_components(PointOutRange& points, TriangleRange& triangles, std::size_t first_vertex,
+                                           std::size_t first_triangle, double min_diagonal)
+{
+  const std::size_t nv = points.size() - first_vertex;
+  std::vector<std::size_t> parent(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    parent[v] = v;
+  auto find = [&parent](std::size_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+    for(int i = 1; i < 3; ++i)
+    {
+      const std::size_t a = find(std::size_t(triangles[t][0]) - first_vertex);
+      const std::size_t b = find(std::size_t(triangles[t][i]) - first_vertex);
+      if(a != b)
+        parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  std::vector<std::array<double, 6>> box(nv, {{std::numeric_limits<double>::infinity(),
+                                              std::numeric_limits<double>::infinity(),
+                                              std::numeric_limits<double>::infinity(),
+                                              -std::numeric_limits<double>::infinity(),
+                                              -std::numeric_limits<double>::infinity(),
+                                              -std::numeric_limits<double>::infinity()}});
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    std::array<double, 6>& b = box[find(v)];
+    for(int a = 0; a < 3; ++a)
+    {
+      const double x = CGAL::to_double(points[first_vertex + v][a]);
+      b[a] = (std::min)(b[a], x);
+      b[3 + a] = (std::max)(b[3 + a], x);
+    }
+  }
+  std::vector<char> small(nv, 0);
+  bool any = false;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(parent[v] == v)
+    {
+      const std::array<double, 6>& b = box[v];
+      const double d2 = (b[3] - b[0]) * (b[3] - b[0]) + (b[4] - b[1]) * (b[4] - b[1]) + (b[5] - b[2]) * (b[5] - b[2]);
+      small[v] = d2 < min_diagonal * min_diagonal;
+      any = any || small[v];
+    }
+  if(!any)
+    return 0;
+  // Closedness of the small components: their undirected edges, sorted.
+  std::vector<std::array<std::size_t, 3>> edges; // root, lower vertex, upper vertex
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+  {
+    const std::size_t root = find(std::size_t(triangles[t][0]) - first_vertex);
+    if(small[root])
+      for(int i = 0; i < 3; ++i)
+      {
+        const std::size_t a = std::size_t(triangles[t][i]), b = std::size_t(triangles[t][(i + 1) % 3]);
+        edges.push_back({{root, (std::min)(a, b), (std::max)(a, b)}});
+      }
+  }
+  std::sort(edges.begin(), edges.end());
+  for(std::size_t e = 0; e < edges.size();)
+  {
+    std::size_t end = e + 1;
+    while(end < edges.size() && edges[end] == edges[e])
+      ++end;
+    if(end - e != 2)
+      small[edges[e][0]] = 0; // has a border or non-manifold edge: not a bubble
+    e = end;
+  }
+  std::size_t removed = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(parent[v] == v && small[v])
+      ++removed;
+  if(removed == 0)
+    return 0;
+  // Compact, keeping the order of what stays.
+  std::vector<std::size_t> new_index(nv, std::size_t(-1));
+  std::vector<typename PointOutRange::value_type> kept_points;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(!small[find(v)])
+    {
+      new_index[v] = first_vertex + kept_points.size();
+      kept_points.push_back(points[first_vertex + v]);
+    }
+  std::vector<typename TriangleRange::value_type> kept_triangles;
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+    if(!small[find(std::size_t(triangles[t][0]) - first_vertex)])
+    {
+      const auto& tri = triangles[t];
+      kept_triangles.push_back(typename TriangleRange::value_type{new_index[std::size_t(tri[0]) - first_vertex],
+                                                                  new_index[std::size_t(tri[1]) - first_vertex],
+                                                                  new_index[std::size_t(tri[2]) - first_vertex]});
+    }
+  points.erase(points.begin() + std::ptrdiff_t(first_vertex), points.end());
+  points.insert(points.end(), kept_points.begin(), kept_points.end());
+  triangles.erase(triangles.begin() + std::ptrdiff_t(first_triangle), triangles.end());
+  triangles.insert(triangles.end(), kept_triangles.begin(), kept_triangles.end());
+  return removed;
+}
+
 } // namespace internal
+
 
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
@@ -166,21 +293,31 @@ inline unsigned asymptotic_decider_mask(const std::array<double, 8>& values, uns
  * \param field a model of `ContouringField_3`, e.g. `Tangent_plane_signed_distance_3<K>`:
  *   `typedef Point_3` (constructible from 3 doubles, `p[a]` coordinates);
  *   `points()`: a range of `Point_3`, the seeds (the samples);
- *   `sampling_density()`, `noise_level()`: doubles (default cell size and margin);
+ *   `sampling_density()`, `noise_level()`: doubles (default cell size, margin, bubbles);
+ *   optionally `default_cell_size()`: a double, the default lattice spacing;
  *   `operator()(const Point_3&)`: `std::optional<double>`, empty = undefined.
- * \param out_points a container of `K::Point_3` (push_back)
- * \param out_triangles a container of 3-index polygons (push_back of `{a, b, c}`)
+ * \param out_points a `std::vector`-like container of `K::Point_3`
+ *        (`push_back`, `size`, `operator[]`, `erase`, `insert`)
+ * \param out_triangles a `std::vector`-like container of 3-index polygons
+ *        (the same, and construction from `{a, b, c}`)
  * \param np `Boolean_isosurfacing::parameters::`
  *  - `cell_size(r)`: lattice spacing;
  *  - `cells_along_longest_side(N)`: r = longest bounding-box side / N
  *    (ignored when `cell_size` is given);
- *  - default r = sampling_density / 3 (rho, see Tangent_plane_signed_distance_3),
+ *  - default r = `field.default_cell_size()` when the field has it, else
+ *    sampling_density / 3 (for Tangent_plane_signed_distance_3, a third of
+ *    the *estimated* rho, even when rho is given),
  *    about 1.25 times the mean sample spacing: finer lattices only resolve
  *    the facets of the piecewise-planar f, coarser ones lose detail;
  *  - `maximum_jump(j)`: a cube with a sign-changing edge along which f
  *    changes by more than j is a discontinuity of f, not a surface, and is
  *    skipped (default 3 r + 2 delta; `std::numeric_limits<double>::infinity()`
  *    gives Hoppe's plain rule);
+ *  - `minimum_closed_component_size(s)`: closed pieces of the output (each
+ *    edge in two of their triangles) whose bounding box has a diagonal below
+ *    s are removed: the "bubbles" Hoppe's f leaves in concave regions, around
+ *    one or two lattice points.  Default rho (`field.sampling_density()`):
+ *    a rho-dense sample cannot witness a smaller closed piece; 0 keeps all;
  *  - `lattice_margin(m)`: cells added around the bounding box of the samples
  *    (default ceil((rho + delta) / r) + 2, so that the traversal ends at
  *    undefined corners before it reaches the lattice border).
@@ -214,7 +351,7 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
       hi[a] = (std::max)(hi[a], CGAL::to_double(p[a]));
     }
   const double longest = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-  double r = field.sampling_density() / 3; // ~1.25 x the mean sample spacing (CGAL's average spacing, 6 neighbours)
+  double r = internal::default_cell_size(field); // ~1.25 x the mean sample spacing (CGAL's average spacing, 6 neighbours)
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cell_size_t>::value)
     r = double(get_parameter(np, internal_np::cell_size));
   else if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters,
@@ -370,6 +507,7 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
   edge_vertex.reserve(3 * surface_cubes.size());
   std::size_t next_vertex = out_points.size();
   const std::size_t first_vertex = next_vertex;
+  const std::size_t first_triangle = out_triangles.size();
   for(const std::uint64_t key : surface_cubes)
   {
     const std::array<std::int64_t, 3> c = internal::lattice_index(key);
@@ -432,6 +570,22 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
       out_triangles.push_back(typename TriangleRange::value_type{a, b, d});
       ++report.number_of_triangles;
     }
+  }
+  // Bubbles: Hoppe's f is piecewise planar and switches planes at the
+  // Voronoi faces of the centres; in concave regions a lattice point can fall
+  // on the wrong side of a plane that is not the one that matters, and
+  // becomes a closed surface around one or two lattice points.  A closed
+  // component smaller than rho is below what a rho-dense sample can witness.
+  const double bubble_size = choose_parameter(get_parameter(np, internal_np::minimum_closed_component_size),
+                                              field.sampling_density());
+  if(!(bubble_size >= 0))
+    throw Invalid_input_error("minimum_closed_component_size must be >= 0");
+  if(bubble_size > 0)
+  {
+    report.removed_closed_components =
+      internal::remove_small_closed_components(out_points, out_triangles, first_vertex, first_triangle, bubble_size);
+    next_vertex = out_points.size();
+    report.number_of_triangles = out_triangles.size() - first_triangle;
   }
   report.number_of_vertices = next_vertex - first_vertex;
   report.field_seconds = field_seconds;

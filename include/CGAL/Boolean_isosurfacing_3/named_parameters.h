@@ -32,6 +32,7 @@
   X(lattice_margin_t, lattice_margin)                 \
   X(number_of_neighbors_t, number_of_neighbors)       \
   X(maximum_jump_t, maximum_jump)                     \
+  X(minimum_closed_component_size_t, minimum_closed_component_size) \
   X(close_at_domain_boundary_t, close_at_domain_boundary) \
   X(slab_layers_t, slab_layers)
 
