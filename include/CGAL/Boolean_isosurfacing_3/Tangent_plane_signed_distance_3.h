@@ -332,8 +332,8 @@ private:
     return *mid;
   }
 
-  // PCA of the samples nb[0..count) (nb[0] = the sample x itself, used as the
-  // origin against cancellation far from the origin).
+  // PCA of the offsets d[j] = x_nb[j] - x, j in [0, count) with use(j)
+  // (offsets from the sample x itself: no cancellation far from the origin).
   struct Plane_fit
   {
     Eigen::Vector3d mean;   ///< centroid - x
@@ -342,15 +342,14 @@ private:
   };
 
   template <typename Use>
-  Plane_fit fit_plane(const std::size_t* nb, std::size_t count, const Use& use) const
+  static Plane_fit fit_plane(const Eigen::Vector3d* d, std::size_t count, const Use& use)
   {
-    const Point_3& x = m_points[nb[0]];
     std::size_t used = 0;
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for(std::size_t j = 0; j < count; ++j)
       if(use(j))
       {
-        mean += offset(nb[j], x);
+        mean += d[j];
         ++used;
       }
     mean /= double(used);
@@ -358,13 +357,20 @@ private:
     for(std::size_t j = 0; j < count; ++j)
       if(use(j))
       {
-        const Eigen::Vector3d e = offset(nb[j], x) - mean;
+        const Eigen::Vector3d e = d[j] - mean;
         covariance += e * e.transpose();
       }
     covariance /= double(used);
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
     solver.computeDirect(covariance);
     return {mean, solver.eigenvectors().col(0).normalized(), std::sqrt(std::max(0.0, solver.eigenvalues()(0)))};
+  }
+
+  void gather_offsets(std::size_t i, std::vector<Eigen::Vector3d>& d) const
+  {
+    const std::size_t* nb = neighbors(i);
+    for(std::size_t j = 0; j < m_k; ++j)
+      d[j] = offset(nb[j], m_points[i]);
   }
 
   Eigen::Vector3d offset(std::size_t j, const Point_3& x) const
@@ -402,14 +408,17 @@ private:
     const std::size_t n = m_points.size();
     const std::size_t k0 = (std::min)(m_k, std::size_t(8));
     const auto all = [](std::size_t) { return true; };
-    std::vector<Plane_fit> first(n);
-    std::vector<double> residual(n);
-    for(std::size_t i = 0; i < n; ++i)
+    std::vector<Eigen::Vector3d> d(m_k);
+    // s from every 16th sample: a median needs no more, and this pass is then
+    // 1/16 of a plane fit per sample.
+    std::vector<double> residual;
+    for(std::size_t i = 0; i < n; i += 16)
     {
-      first[i] = fit_plane(neighbors(i), k0, all);
-      residual[i] = first[i].residual;
+      gather_offsets(i, d);
+      residual.push_back(fit_plane(d.data(), k0, all).residual);
     }
     const double noise_gap = 6.0 * median(residual);
+    residual.assign(n, 0);
     m_centres.resize(n);
     m_normals.resize(n);
     m_trimmed_neighbourhoods = 0;
@@ -417,15 +426,18 @@ private:
     std::vector<char> keep(m_k);
     for(std::size_t i = 0; i < n; ++i)
     {
-      const std::size_t* nb = neighbors(i);
       const Point_3& x = m_points[i];
-      Plane_fit fit = k0 < m_k ? fit_plane(nb, m_k, all) : first[i];
-      if(k0 < m_k)
+      gather_offsets(i, d);
+      Plane_fit fit = fit_plane(d.data(), m_k, all);
+      const double tau = (std::max)(0.3 * m_kth_distance[i], noise_gap);
+      // Where all k samples are within 0.05 tau (RMS) of one plane, a split
+      // could move the plane by about that much only: not worth a test.
+      if(k0 < m_k && fit.residual > 0.05 * tau)
       {
+        const Plane_fit first = fit_plane(d.data(), k0, all);
         for(std::size_t j = 0; j < m_k; ++j)
-          offsets[j] = {(offset(nb[j], x) - first[i].mean).dot(first[i].normal), j};
+          offsets[j] = {(d[j] - first.mean).dot(first.normal), j};
         std::sort(offsets.begin(), offsets.end());
-        const double tau = (std::max)(0.3 * m_kth_distance[i], noise_gap);
         // The group of consecutive offsets, without a gap > tau, that holds j = 0.
         std::size_t self = 0;
         while(offsets[self].second != 0)
@@ -440,8 +452,8 @@ private:
           std::fill(keep.begin(), keep.end(), 0);
           for(std::size_t a = begin; a < end; ++a)
             keep[offsets[a].second] = 1;
-          const Plane_fit own = fit_plane(nb, m_k, [&keep](std::size_t j) { return keep[j] != 0; });
-          const Plane_fit other = fit_plane(nb, m_k, [&keep](std::size_t j) { return keep[j] == 0; });
+          const Plane_fit own = fit_plane(d.data(), m_k, [&keep](std::size_t j) { return keep[j] != 0; });
+          const Plane_fit other = fit_plane(d.data(), m_k, [&keep](std::size_t j) { return keep[j] == 0; });
           // A second sheet is parallel; a group split off across a crease is not.
           if(std::abs(own.normal.dot(other.normal)) >= 0.8)
           {
