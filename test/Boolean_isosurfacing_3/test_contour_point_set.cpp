@@ -911,8 +911,8 @@ TEST(Hoppe, Distcap)
   // (z = 0.1) with 7 towers whose sockets are blind: as a sampled sheet it is
   // genus 0 with one border (the bottom rim), chi = 1.  Its walls and towers
   // are thinner than the tangent-plane neighbourhoods (12,745 points), so
-  // with the default parameters the result has holes and small bubbles
-  // (measured: 3 components, chi -10, 16 border cycles; contouring.md):
+  // with the default parameters the result has holes and handles
+  // (measured: 1 component, chi -14, 16 border cycles; contouring.md):
   // only the guarantees that hold for any input are asserted here.  See the
   // next test for the two parameters that give the disk.
   std::vector<Point_3> points;

@@ -491,7 +491,7 @@ private:
   // vote; more than a quarter of them against means the signs are not
   // outward.  Clean outward samples (sphere, elephant, oni, tori made in code)
   // have no vote against; cube.pwn, whose normals all point along +axis, has
-  // 11 of 19 against.  It costs 26 passes over the points.
+  // 12 of 25 against.  It costs 26 passes over the points.
   bool extreme_samples_face_outward()
   {
     std::size_t votes = 0, against = 0;
