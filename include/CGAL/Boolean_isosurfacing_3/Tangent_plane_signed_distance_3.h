@@ -491,36 +491,53 @@ private:
   // vote; more than a quarter of them against means the signs are not
   // outward.  Clean outward samples (sphere, elephant, oni, tori made in code)
   // have no vote against; cube.pwn, whose normals all point along +axis, has
-  // 12 of 25 against.  It costs 26 passes over the points.
+  // 12 of 25 against.  One pass over the points finds the extreme samples
+  // of all 26 directions: 13 axes, each with its highest and lowest sample.
   bool extreme_samples_face_outward()
   {
-    std::size_t votes = 0, against = 0;
+    std::vector<Vector_3> axes; // one of d and -d for each direction d
     for(int dx = -1; dx <= 1; ++dx)
       for(int dy = -1; dy <= 1; ++dy)
         for(int dz = -1; dz <= 1; ++dz)
+          if(dx > 0 || (dx == 0 && (dy > 0 || (dy == 0 && dz > 0))))
+            axes.emplace_back(dx, dy, dz);
+    // The first sample with the largest (smallest) height along each axis.
+    std::vector<std::size_t> highest(axes.size(), 0), lowest(axes.size(), 0);
+    std::vector<double> high(axes.size(), -std::numeric_limits<double>::infinity());
+    std::vector<double> low(axes.size(), std::numeric_limits<double>::infinity());
+    for(std::size_t i = 0; i < m_points.size(); ++i)
+    {
+      const Vector_3 p = m_points[i] - CGAL::ORIGIN;
+      for(std::size_t a = 0; a < axes.size(); ++a)
+      {
+        const double h = CGAL::to_double(p * axes[a]);
+        if(h > high[a])
         {
-          if(dx == 0 && dy == 0 && dz == 0)
-            continue;
-          const Vector_3 d(dx, dy, dz);
-          std::size_t extreme = 0;
-          double best = -std::numeric_limits<double>::infinity();
-          for(std::size_t i = 0; i < m_points.size(); ++i)
-          {
-            const double h = CGAL::to_double((m_points[i] - CGAL::ORIGIN) * d);
-            if(h > best)
-            {
-              best = h;
-              extreme = i;
-            }
-          }
-          const double alignment = CGAL::to_double(m_normals[extreme] * d) / std::sqrt(CGAL::to_double(d * d));
-          if(std::abs(alignment) > 0.5)
-          {
-            ++votes;
-            if(alignment < 0)
-              ++against;
-          }
+          high[a] = h;
+          highest[a] = i;
         }
+        if(h < low[a])
+        {
+          low[a] = h;
+          lowest[a] = i;
+        }
+      }
+    }
+    std::size_t votes = 0, against = 0;
+    auto vote = [&](std::size_t extreme, const Vector_3& d) {
+      const double alignment = CGAL::to_double(m_normals[extreme] * d) / std::sqrt(CGAL::to_double(d * d));
+      if(std::abs(alignment) > 0.5)
+      {
+        ++votes;
+        if(alignment < 0)
+          ++against;
+      }
+    };
+    for(std::size_t a = 0; a < axes.size(); ++a)
+    {
+      vote(highest[a], axes[a]);
+      vote(lowest[a], -axes[a]);
+    }
     m_outward_votes = votes;
     m_inward_votes = against;
     return 4 * against <= votes;

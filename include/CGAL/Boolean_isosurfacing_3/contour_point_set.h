@@ -282,7 +282,6 @@ std::size_t remove_small_closed_components(PointOutRange& points, TriangleRange&
 
 } // namespace internal
 
-
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
  * Contours the zero set of `field` on a regular lattice, visiting only the
