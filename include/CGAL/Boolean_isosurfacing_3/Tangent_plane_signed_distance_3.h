@@ -28,6 +28,7 @@
 //     walls, see orient_by_minimum_spanning_forest), each tree rooted at its sample of largest z
 //     whose normal is forced to +z (the top of a closed surface faces up).
 
+#include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 
@@ -250,11 +251,6 @@ private:
     return CGAL::parameters::is_default_parameter<NP, Tag>::value;
   }
 
-  static double seconds_since(std::chrono::steady_clock::time_point start)
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-
   void check_points() const
   {
     if(m_points.empty())
@@ -322,7 +318,7 @@ private:
       }
       m_kth_distance[i] = std::sqrt(last);
     }
-    m_timings.neighbors = seconds_since(start);
+    m_timings.neighbors = internal::seconds_since(start);
   }
 
   static double median(std::vector<double> values)
@@ -471,7 +467,7 @@ private:
     m_rho = m_estimated_rho = 1.5 * std::sqrt(15.0 / double(m_k)) * median(m_kth_distance);
     m_delta = 2.0 * median(residual);
     m_median_spacing = median(m_nearest_distance);
-    m_timings.planes = seconds_since(start);
+    m_timings.planes = internal::seconds_since(start);
   }
 
   void orient_by_input_normals(const std::vector<Vector_3>& input_normals)
@@ -481,7 +477,7 @@ private:
       if(CGAL::to_double(m_normals[i] * input_normals[i]) < 0)
         m_normals[i] = -m_normals[i];
     m_orientation_trees = 0;
-    m_timings.orientation = seconds_since(start);
+    m_timings.orientation = internal::seconds_since(start);
   }
 
   // A cheap test of input normals that are supposed to point outward: the
@@ -643,7 +639,7 @@ private:
         }
       }
     }
-    m_timings.orientation = seconds_since(start);
+    m_timings.orientation = internal::seconds_since(start);
   }
 
   void build_centre_tree()
@@ -654,7 +650,7 @@ private:
                                            boost::counting_iterator<std::size_t>(m_centres.size()), Splitter(),
                                            Search_traits(m_centre_map));
     m_centre_tree->build();
-    m_timings.neighbors += seconds_since(start);
+    m_timings.neighbors += internal::seconds_since(start);
   }
 
   std::vector<Point_3> m_points;

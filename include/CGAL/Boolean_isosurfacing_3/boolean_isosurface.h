@@ -4,6 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_H
 
+#include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/Scalar_fields.h>
@@ -49,11 +50,6 @@ struct Boolean_isosurface_statistics
 };
 
 namespace internal {
-
-inline double seconds_since(const std::chrono::steady_clock::time_point& t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // The polygons of one chunk of tetrahedra, with chunk-local vertex indices.
 struct Tbiso_chunk

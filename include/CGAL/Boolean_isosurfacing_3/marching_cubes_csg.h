@@ -4,6 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_MARCHING_CUBES_CSG_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_MARCHING_CUBES_CSG_H
 
+#include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/Lattice_classifier_3.h>
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
@@ -102,11 +103,6 @@ Point make_output_point(const std::array<double, 3>& p)
     return Point(p[0], p[1], p[2]);
   else
     return Point{{p[0], p[1], p[2]}};
-}
-
-inline double seconds_since(const std::chrono::steady_clock::time_point& start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <typename ConcurrencyTag>
