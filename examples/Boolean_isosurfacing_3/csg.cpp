@@ -1,13 +1,16 @@
 // csg: Boolean operations on closed triangle meshes by Marching Cubes.
 //
-//   csg A B --op union|intersection|difference (--cells N | --spacing r) [-o out.off] [--threads T]
+//   csg A B --op union|intersection|difference (--cells N | --spacing r) [-o out.off]
 //   csg A B C ... --expr "A & !B | C" (--cells N | --spacing r) [-o out.off]
 //   csg --demo DIR
 //
 // Reads OFF/OBJ/PLY/STL; the i-th input is the variable A, B, C, ... of the
 // expression (also f0, f1, ...).  Prints the lattice size, the time of each
-// stage, the output size and the output's Surveyor volume.  Bad input gets one
-// line on stderr and a non-zero exit.
+// stage, the output size and the output's Surveyor volume.  `csg --help`
+// lists the options.  Exit status: 0, 1 for a bad file or a failed
+// computation, 2 for a bad command line; every error is one line on stderr.
+
+#include "tool_support.h"
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
@@ -30,7 +33,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
+#include <optional>
+#include <set>
 #include <string>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -40,29 +46,58 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
+using biso_tools::Usage_error;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef Epick::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 
+// What to do with a result that is true outside every input ("!A").
+enum class Unbounded_mode
+{
+  BOX,    // intersect it with a box around the inputs: a closed, outward solid
+  SURFACE // keep the inputs' surfaces only: closed, inward-oriented (it bounds the complement)
+};
+
 struct Options
 {
   std::vector<std::string> files;
   std::string op, expression, output, demo_dir;
+  bool have_op = false, have_expression = false;
   std::size_t cells = 0;
   double spacing = 0;
+  std::string lattice_flag; // "--cells N" or "--spacing r", for messages
+  double max_memory_gib = 0; // 0: the default
+  Unbounded_mode unbounded = Unbounded_mode::BOX;
   bool parallel = true;
 };
 
-int usage(const std::string& message)
-{
-  std::cerr << "csg: " << message << "\n"
-            << "usage: csg A B --op union|intersection|difference (--cells N | --spacing r) [-o out.off]\n"
-            << "       csg A B C ... --expr \"A & !B | C\" (--cells N | --spacing r) [-o out.off]\n"
-            << "       csg --demo DIR\n"
-            << "options: --sequential (default: parallel when built with TBB)\n";
-  return 2;
-}
+const char* help_text =
+    "csg: Boolean operations on closed triangle meshes by Marching Cubes\n"
+    "usage: csg A B --op union|intersection|difference (--cells N | --spacing r) [options]\n"
+    "       csg A B C ... --expr \"A & !B | C\" (--cells N | --spacing r) [options]\n"
+    "       csg --demo DIR [--cells N | --spacing r]\n"
+    "inputs: closed triangle meshes (OFF, OBJ, PLY, STL); the i-th is variable A, B, C, ... (or f0, f1, ...).\n"
+    "  Their orientation does not matter (a lattice point is inside a mesh by the parity of its crossings):\n"
+    "  an inward-oriented input is used as the solid it bounds, with a note on stderr.\n"
+    "options:\n"
+    "  --op OP          union, intersection or difference (A & !B)\n"
+    "  --expr E         a Boolean expression of the inputs: ! (not), & (and), | (or), - (difference),\n"
+    "                   parentheses, true, false\n"
+    "  --cells N        N lattice cells along the longest side of the inputs' bounding box\n"
+    "  --spacing r      the lattice spacing\n"
+    "  -o, --output F   write the result to F (.off, .obj, .ply or .stl), checked before computing\n"
+    "  --unbounded box|surface\n"
+    "                   a result that is true outside every input (\"!A\", \"!(A | B)\", \"A | !A\") is unbounded:\n"
+    "                   box (default): clip it to the box one lattice cell larger than the inputs'\n"
+    "                     bounding box on every side and close it with the box's faces (a closed,\n"
+    "                     outward solid, whose volume is printed; \"A | !A\" gives the box itself);\n"
+    "                   surface: keep only the inputs' surfaces (closed and inward-oriented, bounding\n"
+    "                     the complement, whose volume is printed)\n"
+    "  --max-memory G   refuse a lattice estimated to need more than G GiB (default 8, at most 3/4 of the RAM)\n"
+    "  --sequential     one thread (default: parallel when built with TBB; the same mesh)\n"
+    "  -h, --help       this help\n"
+    "exit status: 0 success, 1 bad input file or failed computation, 2 bad command line\n";
 
 // A progress bar on stderr, only for runs that last and only on a terminal.
 class Progress_bar
@@ -82,22 +117,62 @@ private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
+// The expression the command line asks for, over `number_of_meshes`
+// variables.  \throws Usage_error: it is a command-line problem.
 BI::Boolean_expression expression_from(const Options& options, std::size_t number_of_meshes)
 {
-  if(!options.expression.empty())
+  if(options.have_expression)
   {
-    const BI::Boolean_expression parsed = BI::Boolean_expression::parse(options.expression);
+    BI::Boolean_expression parsed;
+    try
+    {
+      parsed = BI::Boolean_expression::parse(options.expression);
+    }
+    catch(const BI::Invalid_input_error& e)
+    {
+      throw Usage_error(std::string("--expr: ") + e.what());
+    }
     if(parsed.number_of_variables() > number_of_meshes)
-      throw BI::Invalid_input_error("the expression names " + std::to_string(parsed.number_of_variables()) +
-                                    " inputs but " + std::to_string(number_of_meshes) + " files were given");
+      throw Usage_error("--expr names " + std::to_string(parsed.number_of_variables()) + " inputs but " +
+                        std::to_string(number_of_meshes) + " files were given");
     return BI::Boolean_expression(number_of_meshes, parsed.terms());
   }
   if(number_of_meshes != 2)
-    throw BI::Invalid_input_error("--op needs exactly two input files (use --expr for more)");
+    throw Usage_error("--op needs exactly two input files, got " + std::to_string(number_of_meshes) +
+                      " (use --expr for more)");
   if(options.op == "union") return BI::Boolean_expression::union_of(2);
   if(options.op == "intersection") return BI::Boolean_expression::intersection_of(2);
   if(options.op == "difference") return BI::Boolean_expression::difference();
-  throw BI::Invalid_input_error("unknown operation '" + options.op + "' (union, intersection or difference)");
+  throw Usage_error("--op: unknown operation " + biso_tools::quote_arg(options.op) +
+                    " (union, intersection or difference)");
+}
+
+// `expression & X`, X a new last variable: the result clipped to the solid X.
+BI::Boolean_expression and_with_new_variable(const BI::Boolean_expression& expression)
+{
+  const std::size_t n = expression.number_of_variables();
+  if(n + 1 > BI::Boolean_expression::max_variables)
+    throw BI::Invalid_input_error("the result is unbounded and " + std::to_string(n) +
+                                  " inputs leave no variable for the clipping box: use --unbounded surface");
+  std::vector<BI::Boolean_term> terms = expression.terms();
+  for(BI::Boolean_term& t : terms)
+    t.pos |= std::uint64_t(1) << n;
+  return BI::Boolean_expression(n + 1, std::move(terms));
+}
+
+// The closed, outward triangulated box [lo, hi].
+Mesh box_mesh(const std::array<double, 3>& lo, const std::array<double, 3>& hi)
+{
+  Mesh m;
+  std::array<Mesh::Vertex_index, 8> v;
+  // Corner k at (k & 1, (k >> 1) & 1, (k >> 2) & 1).
+  for(int k = 0; k < 8; ++k)
+    v[k] = m.add_vertex(Point((k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]));
+  const int faces[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                            {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  for(const auto& f : faces)
+    m.add_face(v[f[0]], v[f[1]], v[f[2]]);
+  return m;
 }
 
 struct Result
@@ -107,13 +182,45 @@ struct Result
   BI::Regular_lattice_3 lattice;
 };
 
-Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& expression, const Options& options)
+std::size_t max_memory_bytes(const Options& options)
+{
+  if(options.max_memory_gib > 0)
+    return std::size_t(options.max_memory_gib * double(std::size_t(1) << 30));
+  // The library's default, unless this machine has less: refusing with an
+  // estimate beats being killed half-way.
+  std::size_t limit = BI::Lattice_classifier_3::default_max_memory_bytes;
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  if(pages > 0 && page_size > 0)
+    limit = (std::min)(limit, std::size_t(double(pages) * double(page_size) * 0.75));
+  return limit;
+}
+
+// `e`'s message, with the named parameter the library suggests replaced by
+// this tool's flag, prefixed by the lattice flag that caused it.
+std::string lattice_message(const Options& options, const BI::Lattice_too_large_error& e)
+{
+  std::string message = e.what();
+  const std::string parameter = "(named parameter max_memory_bytes)";
+  const std::size_t at = message.find(parameter);
+  if(at != std::string::npos)
+    message.replace(at, parameter.size(), "(--max-memory)");
+  return options.lattice_flag.empty() ? message : options.lattice_flag + ": " + message;
+}
+
+CGAL::Bbox_3 bounding_box(const std::vector<Mesh>& meshes)
 {
   CGAL::Bbox_3 box;
   for(const Mesh& m : meshes) box += PMP::bbox(m);
-  const BI::Regular_lattice_3 enclosing = options.cells > 0
-                                              ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells)
-                                              : BI::Regular_lattice_3::enclosing(box, options.spacing);
+  return box;
+}
+
+// The lattice encloses `box` (the inputs' bounding box) with `margin_cells`.
+Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& expression, const Options& options,
+               const CGAL::Bbox_3& box, std::size_t margin_cells = 1)
+{
+  const BI::Regular_lattice_3 enclosing =
+      options.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells, margin_cells)
+                        : BI::Regular_lattice_3::enclosing(box, options.spacing, margin_cells);
   // `enclosing` puts a lattice plane on each side of the bounding box, so
   // inputs with axis-aligned faces there (CAD parts) would have whole faces
   // on lattice planes: still a correct, closed, 2-manifold result (one
@@ -133,14 +240,13 @@ Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& ex
   Mesh output;
   const Progress_bar progress;
   BI::Marching_cubes_csg_statistics statistics;
+  const auto np = BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::progress(progress));
 #ifdef CGAL_LINKED_WITH_TBB
   if(options.parallel)
-    statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(meshes, expression, lattice, output,
-                                                             BI::parameters::progress(progress));
+    statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(meshes, expression, lattice, output, np);
   else
 #endif
-    statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(meshes, expression, lattice, output,
-                                                               BI::parameters::progress(progress));
+    statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(meshes, expression, lattice, output, np);
   return {std::move(output), statistics, lattice};
 }
 
@@ -164,11 +270,11 @@ double exact_volume(const CGAL::Surface_mesh<Epeck::Point_3>& m)
 int run_demo(Options options)
 {
   const std::string& dir = options.demo_dir;
-  if(mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST)
-  {
-    std::cerr << "csg: cannot create directory " << dir << "\n";
-    return 1;
-  }
+  struct stat info;
+  if(mkdir(dir.c_str(), 0755) != 0 && (errno != EEXIST || stat(dir.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)))
+    throw biso_tools::File_error(dir + ": cannot create the directory (" +
+                                 (errno == EEXIST ? std::string("a file of that name exists") : std::strerror(errno)) + ")");
+  biso_tools::check_output_file(dir + "/A_sphere.off");
   // The built-in pair: a sphere and a torus that cuts through it.
   std::vector<Mesh> meshes(2);
   BI::make_icosphere(meshes[0], Point(0, 0, 0), 1.0, 4);
@@ -198,7 +304,7 @@ int run_demo(Options options)
     else PMP::corefine_and_compute_difference(a_copy, b_copy, exact_result);
     const double exact = exact_volume(exact_result);
 
-    const Result r = run_csg(meshes, expression, options);
+    const Result r = run_csg(meshes, expression, options, bounding_box(meshes));
     const double ours = BI::surveyor_volume(r.mesh);
     std::printf("%s (%s)\n", name, expression.to_string().c_str());
     print_result(r);
@@ -208,49 +314,160 @@ int run_demo(Options options)
   return 0;
 }
 
-int run(const Options& options)
+std::string variable_name(std::size_t i)
 {
-  if(options.files.empty()) return usage("no input file");
-  if(options.op.empty() == options.expression.empty()) return usage("give exactly one of --op and --expr");
-  if((options.cells > 0) == (options.spacing > 0)) return usage("give exactly one of --cells N and --spacing r");
-  std::vector<Mesh> meshes(options.files.size());
-  for(std::size_t i = 0; i < options.files.size(); ++i)
+  return i < 26 ? std::string(1, char('A' + i)) : "f" + std::to_string(i);
+}
+
+// Reads every input; an inward-oriented one is accepted with a note.
+std::vector<Mesh> read_inputs(const std::vector<std::string>& files)
+{
+  std::vector<Mesh> meshes(files.size());
+  for(std::size_t i = 0; i < files.size(); ++i)
   {
+    biso_tools::check_input_file(files[i]);
     try
     {
-      BI::IO::read_closed_triangle_mesh(options.files[i], meshes[i]);
+      BI::IO::read_closed_triangle_mesh(files[i], meshes[i], /* allow_inward = */ true);
     }
     catch(const BI::Invalid_input_error& e)
     {
-      std::cerr << "csg: " << options.files[i] << ": " << e.what() << "\n";
-      return 1;
+      throw biso_tools::File_error(files[i] + ": " + e.what());
     }
+    if(BI::surveyor_volume(meshes[i], BI::parameters::signed_volume(true)) < 0)
+      biso_tools::print_error("csg", "note: " + files[i] + " (" + variable_name(i) +
+                                         ") is oriented inward; the classification counts crossings, so it "
+                                         "is used as the solid it bounds");
   }
-  const BI::Boolean_expression expression = expression_from(options, meshes.size());
+  return meshes;
+}
+
+int run(const Options& options)
+{
+  if(options.files.empty()) throw Usage_error("no input file (csg --help for usage)");
+  if(options.have_op == options.have_expression) throw Usage_error("give exactly one of --op and --expr");
+  if((options.cells > 0) == (options.spacing > 0)) throw Usage_error("give exactly one of --cells N and --spacing r");
+  const BI::Boolean_expression requested = expression_from(options, options.files.size());
+  BI::Boolean_expression expression = requested;
+  if(!options.output.empty()) biso_tools::check_output_file(options.output);
+  std::vector<Mesh> meshes = read_inputs(options.files);
+
+  // Outside every input all masks are 0, so the result is unbounded iff
+  // the expression is true there.
+  const bool unbounded = expression.evaluate(0);
+  const bool clip = unbounded && options.unbounded == Unbounded_mode::BOX;
+  std::array<double, 3> clip_lo{}, clip_hi{};
+  std::size_t margin_cells = 1;
+  const CGAL::Bbox_3 box = bounding_box(meshes);
+  if(clip)
+  {
+    const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+    const double spacing = options.cells > 0 ? longest / double(options.cells) : options.spacing;
+    // The box one cell beyond the inputs, inside a lattice of two cells'
+    // margin: its faces lie between lattice planes (the lattice is shifted
+    // by a fraction of a cell), so they come out flat.
+    for(int a = 0; a < 3; ++a)
+    {
+      clip_lo[a] = box.min(a) - spacing;
+      clip_hi[a] = box.max(a) + spacing;
+    }
+    meshes.push_back(box_mesh(clip_lo, clip_hi));
+    expression = and_with_new_variable(expression);
+    margin_cells = 2;
+  }
+
   const auto start = std::chrono::steady_clock::now();
-  const Result r = run_csg(meshes, expression, options);
+  std::optional<Result> result;
+  try
+  {
+    result.emplace(run_csg(meshes, expression, options, box, margin_cells));
+  }
+  catch(const BI::Lattice_too_large_error& e)
+  {
+    throw BI::Invalid_input_error(lattice_message(options, e));
+  }
+  const Result& r = *result;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("csg %s over %zu meshes\n", expression.to_string().c_str(), meshes.size());
+  const std::size_t inputs = options.files.size();
+  std::printf("csg %s over %zu meshes\n", requested.to_string().c_str(), options.files.size());
+  if(clip)
+    std::printf("  the result is unbounded: clipped to the box [%.9g, %.9g, %.9g] - [%.9g, %.9g, %.9g]\n",
+                clip_lo[0], clip_lo[1], clip_lo[2], clip_hi[0], clip_hi[1], clip_hi[2]);
   print_result(r);
   std::printf("  total %.3f s\n", seconds);
   if(r.mesh.number_of_faces() == 0)
-    std::printf("  the result is empty\n");
+    std::printf(unbounded && !clip ? "  the result is all of space (no surface)\n" : "  the result is empty\n");
+  else if(unbounded && !clip)
+    std::printf("  the result is unbounded: its surface is inward-oriented; the complement has volume %.9g\n",
+                -BI::surveyor_volume(r.mesh, BI::parameters::signed_volume(true)));
   else
     std::printf("  volume %.9g\n", BI::surveyor_volume(r.mesh));
   if(!options.output.empty() &&
      !CGAL::IO::write_polygon_mesh(options.output, r.mesh, CGAL::parameters::stream_precision(17)))
-  {
-    std::cerr << "csg: cannot write " << options.output << "\n";
-    return 1;
-  }
+    throw biso_tools::File_error(options.output + ": cannot write");
   return 0;
 }
 
-bool parse_number(const std::string& text, double& value)
+// Fills `options` from the command line.  \throws Usage_error.
+void parse(int argc, char** argv, Options& options, bool& help)
 {
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end != text.c_str() && *end == '\0' && std::isfinite(value);
+  using biso_tools::quote_arg;
+  std::set<std::string> seen;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const bool is_flag = arg.size() > 1 && arg[0] == '-';
+    if(is_flag && arg != "--sequential" && !seen.insert(arg == "--output" ? "-o" : arg).second)
+      throw Usage_error(biso_tools::printable(arg) + " is given more than once");
+    auto value = [&](const char* what) -> std::string {
+      if(i + 1 >= argc) throw Usage_error(arg + " needs " + what);
+      const std::string v = argv[++i];
+      if(v.empty()) throw Usage_error(arg + " needs " + what + ", got an empty argument");
+      return v;
+    };
+    if(arg == "--op") { options.op = value("an operation (union, intersection or difference)"); options.have_op = true; }
+    else if(arg == "--expr") { options.expression = value("an expression"); options.have_expression = true; }
+    else if(arg == "-o" || arg == "--output")
+    {
+      options.output = value("a file name");
+      const std::string e = biso_tools::extension(options.output);
+      if(e != "off" && e != "obj" && e != "ply" && e != "stl")
+        throw Usage_error(arg + ": " + quote_arg(options.output) + " has no supported extension (.off, .obj, .ply, .stl)");
+    }
+    else if(arg == "--demo") options.demo_dir = value("a directory");
+    else if(arg == "--sequential") options.parallel = false;
+    else if(arg == "--cells")
+    {
+      const std::string text = value("a number of cells");
+      // Each axis of a lattice has fewer than 2^31 points; whether the whole
+      // lattice fits is decided once the inputs' box is known.
+      options.cells = biso_tools::parse_count(arg, text, 1, (std::size_t(1) << 31) - 8,
+                                              "a lattice has at most 2^31 points");
+      options.lattice_flag = "--cells " + text;
+    }
+    else if(arg == "--spacing")
+    {
+      const std::string text = value("a spacing");
+      options.spacing = biso_tools::parse_real(arg, text, biso_tools::Sign_rule::POSITIVE);
+      options.lattice_flag = "--spacing " + text;
+    }
+    else if(arg == "--max-memory")
+      options.max_memory_gib = biso_tools::parse_real(arg, value("a size in GiB"), biso_tools::Sign_rule::POSITIVE);
+    else if(arg == "--unbounded")
+    {
+      const std::string mode = value("box or surface");
+      if(mode == "box") options.unbounded = Unbounded_mode::BOX;
+      else if(mode == "surface") options.unbounded = Unbounded_mode::SURFACE;
+      else throw Usage_error("--unbounded: " + quote_arg(mode) + " is neither box nor surface");
+    }
+    else if(arg == "-h" || arg == "--help") help = true;
+    else if(is_flag) throw Usage_error("unknown option " + quote_arg(arg) + " (csg --help for usage)");
+    else options.files.push_back(arg);
+  }
+  if(!options.demo_dir.empty() && (!options.files.empty() || options.have_op || options.have_expression ||
+                                   !options.output.empty()))
+    throw Usage_error("--demo takes a directory and at most --cells or --spacing, no input file, --op, --expr or -o");
+  if(options.cells > 0 && options.spacing > 0) throw Usage_error("give only one of --cells N and --spacing r");
 }
 
 } // namespace
@@ -258,60 +475,31 @@ bool parse_number(const std::string& text, double& value)
 int main(int argc, char** argv)
 {
   Options options;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    auto value = [&](const char* what) -> std::string {
-      if(i + 1 >= argc) throw std::invalid_argument(arg + " needs " + what);
-      return argv[++i];
-    };
-    try
-    {
-      if(arg == "--op") options.op = value("an operation");
-      else if(arg == "--expr") options.expression = value("an expression");
-      else if(arg == "-o" || arg == "--output") options.output = value("a file name");
-      else if(arg == "--demo") options.demo_dir = value("a directory");
-      else if(arg == "--sequential") options.parallel = false;
-      else if(arg == "--cells" || arg == "--spacing")
-      {
-        double v = 0;
-        const std::string text = value("a number");
-        if(!parse_number(text, v) || v <= 0) return usage(arg + ": '" + text + "' is not a positive number");
-        if(arg == "--cells")
-        {
-          if(v != std::floor(v) || v > 1e6) return usage("--cells: '" + text + "' is not a whole number of cells");
-          options.cells = std::size_t(v);
-        }
-        else
-          options.spacing = v;
-      }
-      else if(arg == "-h" || arg == "--help") { usage("Boolean operations on closed meshes by Marching Cubes"); return 0; }
-      else if(!arg.empty() && arg[0] == '-') return usage("unknown option " + arg);
-      else options.files.push_back(arg);
-    }
-    catch(const std::invalid_argument& e)
-    {
-      return usage(e.what());
-    }
-  }
   try
   {
+    bool help = false;
+    parse(argc, argv, options, help);
+    if(help)
+    {
+      std::cout << help_text;
+      return 0;
+    }
     if(!options.demo_dir.empty()) return run_demo(options);
     return run(options);
   }
-  catch(const BI::Invalid_input_error& e)
+  catch(const Usage_error& e)
   {
-    std::cerr << "csg: " << e.what() << "\n";
-    return 1;
+    biso_tools::print_error("csg", e.what());
+    return 2;
   }
   catch(const std::bad_alloc&)
   {
-    std::cerr << "csg: out of memory (use a coarser lattice)\n";
+    biso_tools::print_error("csg", "out of memory (use a coarser lattice)");
     return 1;
   }
   catch(const std::exception& e)
   {
-    std::cerr << "csg: " << e.what() << "\n";
+    biso_tools::print_error("csg", e.what());
     return 1;
   }
 }

@@ -1,14 +1,18 @@
-// Runs the command-line tools (`volume`, `csg`) on good and bad files the
-// tests write themselves, and checks the exit status and what they print.
+// Runs the command-line tools (`volume`, `csg`, `contour`) on good and bad
+// files the tests write themselves (and on the shared point sets), and checks
+// the exit status and what they print.
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdio>
+#include <csignal>
 #include <cstdlib>
+#include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -69,6 +73,35 @@ class CsgTool : public Tool
 protected:
   Result run(const std::string& arguments) { return run_tool(BISO_CSG_TOOL, arguments); }
 };
+
+class ContourTool : public Tool
+{
+protected:
+  Result run(const std::string& arguments) { return run_tool(BISO_CONTOUR_TOOL, arguments); }
+};
+
+// Whether `s` prints on one terminal line: no control byte, no DEL, no byte
+// of an invalid UTF-8 sequence (only ASCII is expected here).
+bool is_printable_line(const std::string& s)
+{
+  for(char c : s)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if(u < 0x20 || u >= 0x7f)
+      return false;
+  }
+  return true;
+}
+
+// stderr is one printable line followed by a newline.
+::testing::AssertionResult is_one_clean_line(const std::string& err)
+{
+  if(err.empty() || err.back() != '\n' || err.find('\n') != err.size() - 1)
+    return ::testing::AssertionFailure() << "not exactly one line: [" << err << "]";
+  if(!is_printable_line(err.substr(0, err.size() - 1)))
+    return ::testing::AssertionFailure() << "raw non-printable bytes: [" << err << "]";
+  return ::testing::AssertionSuccess();
+}
 
 const char* tetrahedron_off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
 
@@ -290,6 +323,319 @@ TEST_F(CsgTool, DemoPrintsTheThreeOperationsAgainstExactVolumes)
     ++count;
   }
   EXPECT_EQ(count, 3u) << r.out;
+}
+
+
+// The box [0,2]^3 with its faces reversed.
+std::string inward_box_off(double x, double y, double z, double s)
+{
+  std::string text = box_off(x, y, z, s);
+  std::istringstream in(text);
+  std::ostringstream out;
+  std::string line;
+  int number = 0;
+  while(std::getline(in, line))
+  {
+    int n, a, b, c;
+    if(++number > 10 && std::sscanf(line.c_str(), "%d %d %d %d", &n, &a, &b, &c) == 4)
+      out << "3 " << a << ' ' << c << ' ' << b << "\n";
+    else
+      out << line << "\n";
+  }
+  return out.str();
+}
+
+// --- B.2: complements, unbounded results, inward inputs --------------------
+
+TEST_F(CsgTool, ComplementIsClippedByTheBoxAndClosed)
+{
+  // !A for A = [0,2]^3 at 40 cells (spacing 0.05): the box one cell beyond
+  // A, [-0.05, 2.05]^3, minus A: 2.1^3 - 8 = 1.261.
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), out = m_dir + "/not_a.off";
+  const Result r = run(a + " --expr \"!A\" --cells 40 -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("unbounded: clipped to the box"), std::string::npos) << r.out;
+  EXPECT_NEAR(number_after(r.out, "volume "), 2.1 * 2.1 * 2.1 - 8, 0.04) << r.out;
+  // The written shell is a valid, outward, closed solid for the volume tool.
+  const Result v = run_tool(BISO_VOLUME_TOOL, out);
+  EXPECT_EQ(v.status, 0) << v.err;
+  EXPECT_NEAR(number_after(v.out, "volume "), 2.1 * 2.1 * 2.1 - 8, 0.04) << v.out;
+}
+
+TEST_F(CsgTool, ComplementOfAUnionAndTheWholeSpace)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(1, 1, 1, 2));
+  // Inputs' box [0,3]^3, 60 cells: clip box [-0.05, 3.05]^3, minus the union (15).
+  const Result r = run(a + " " + b + " --expr \"!(A | B)\" --cells 60");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "volume "), 3.1 * 3.1 * 3.1 - 15, 0.1) << r.out;
+  // A | !A is everything: the clip box itself, not "empty".
+  const Result all = run(a + " --expr \"A | !A\" --cells 40");
+  ASSERT_EQ(all.status, 0) << all.err;
+  EXPECT_EQ(all.out.find("empty"), std::string::npos) << all.out;
+  EXPECT_NEAR(number_after(all.out, "volume "), 2.1 * 2.1 * 2.1, 0.04) << all.out;
+  // A & !A is empty, and says so.
+  const Result none = run(a + " --expr \"A & !A\" --cells 40");
+  ASSERT_EQ(none.status, 0) << none.err;
+  EXPECT_NE(none.out.find("the result is empty"), std::string::npos) << none.out;
+}
+
+TEST_F(CsgTool, UnboundedSurfaceModeKeepsTheInwardSurface)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), out = m_dir + "/not_a.off";
+  const Result r = run(a + " --expr \"!A\" --cells 40 --unbounded surface -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "the complement has volume "), 8, 0.1) << r.out;
+  EXPECT_TRUE(std::ifstream(out).good());
+  // Written inward: the volume tool refuses it unless --signed, which gives -8.
+  EXPECT_NE(run_tool(BISO_VOLUME_TOOL, out).status, 0);
+  const Result v = run_tool(BISO_VOLUME_TOOL, "--signed " + out);
+  EXPECT_EQ(v.status, 0) << v.err;
+  EXPECT_NEAR(number_after(v.out, "volume "), -8, 0.1) << v.out;
+  const Result all = run(a + " --expr \"A | !A\" --cells 40 --unbounded surface");
+  ASSERT_EQ(all.status, 0) << all.err;
+  EXPECT_NE(all.out.find("all of space"), std::string::npos) << all.out;
+}
+
+TEST_F(CsgTool, InwardInputIsUsedWithANote)
+{
+  const std::string a = write("inward.off", inward_box_off(0, 0, 0, 2)), b = write("b.off", box_off(1, 1, 1, 2));
+  const Result r = run(a + " " + b + " --op union --cells 61");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(is_one_clean_line(r.err));
+  EXPECT_NE(r.err.find("note:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("inward"), std::string::npos) << r.err;
+  EXPECT_NEAR(number_after(r.out, "volume "), 15, 0.06 * 15) << r.out;
+  // The same result as with the outward box.
+  const Result outward = run(write("a.off", box_off(0, 0, 0, 2)) + " " + b + " --op union --cells 61");
+  EXPECT_EQ(number_after(r.out, "volume "), number_after(outward.out, "volume ")) << r.out << outward.out;
+}
+
+// --- B.4: help and usage -----------------------------------------------------
+
+TEST_F(CsgTool, HelpGoesToStdoutWithExitZero)
+{
+  for(const char* flag : {"--help", "-h"})
+  {
+    const Result r = run(flag);
+    EXPECT_EQ(r.status, 0) << flag;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    EXPECT_NE(r.out.find("usage: csg"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--unbounded"), std::string::npos) << r.out;
+  }
+}
+
+TEST_F(ContourTool, HelpGoesToStdoutWithExitZero)
+{
+  const Result r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("usage: contour"), std::string::npos) << r.out;
+}
+
+// Runs the contour tool with a terminal (a pseudo-terminal) as stdin and no
+// argument: it must not wait for input, but print a usage error and exit 2.
+TEST_F(ContourTool, NoArgumentWithATerminalOnStdinIsAUsageError)
+{
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(grantpt(master), 0);
+  ASSERT_EQ(unlockpt(master), 0);
+  const std::string slave_name = ptsname(master);
+  const std::string err_path = m_dir + "/stderr.txt";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if(pid == 0)
+  {
+    const int slave = open(slave_name.c_str(), O_RDWR);
+    const int err = open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int null = open("/dev/null", O_WRONLY);
+    if(slave < 0 || err < 0 || null < 0) _exit(100);
+    dup2(slave, 0);
+    dup2(null, 1);
+    dup2(err, 2);
+    execl(BISO_CONTOUR_TOOL, BISO_CONTOUR_TOOL, static_cast<char*>(nullptr));
+    _exit(101);
+  }
+  int status = 0;
+  bool exited = false;
+  for(int i = 0; i < 200 && !exited; ++i) // 10 s at most
+  {
+    exited = waitpid(pid, &status, WNOHANG) == pid;
+    if(!exited) usleep(50000);
+  }
+  if(!exited)
+  {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  close(master);
+  ASSERT_TRUE(exited) << "contour waited on the terminal";
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::string err = slurp(err_path);
+  EXPECT_TRUE(is_one_clean_line(err));
+  EXPECT_NE(err.find("terminal"), std::string::npos) << err;
+}
+
+// --- B.5 and C: every bad command line is one line, with the right code -----
+
+struct Bad_arguments { std::string arguments; int status; const char* expected; };
+
+TEST_F(CsgTool, BadCommandLinesGetOneLineAndExitTwo)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), two = a + " " + a + " --op union ";
+  const Bad_arguments cases[] = {
+      {two + "--cells 12.5", 2, "not a whole number"},
+      {two + "--cells nan", 2, "NaN"},
+      {two + "--cells inf", 2, "infinite"},
+      {two + "--cells ''", 2, "empty"},
+      {two + "--cells 0", 2, "at least 1"},
+      {two + "--cells -3", 2, "at least 1"},
+      {two + "--cells 10x", 2, "not a number"},
+      {two + "--cells 3000000000", 2, "above the limit of"},
+      {two + "--spacing -1", 2, "positive"},
+      {two + "--spacing 1e999", 2, "too large"},
+      {two + "--spacing", 2, "needs"},
+      {two + "--cells 10 --cells 20", 2, "more than once"},
+      {two + "--cells 10 --spacing 0.1", 2, "only one"},
+      {two + "--cells 10 --frobnicate", 2, "unknown option"},
+      {two + "--cells 10 --unbounded maybe", 2, "neither box nor surface"},
+      {two + "--cells 10 -o out.xyz", 2, "extension"},
+      {two + "--cells 10 --max-memory -2", 2, "positive"},
+      {two + "--cells 10 --expr A", 2, "exactly one of --op and --expr"},
+      {a + " " + a + " --expr \"A & (B\" --cells 10", 2, "column"},
+      {a + " " + a + " --expr \"A | C\" --cells 10", 2, "2 files"},
+      {a + " " + a + " --op xor --cells 10", 2, "unknown operation"},
+      {a + " --op union --cells 10", 2, "exactly two"},
+      {"--demo " + m_dir + "/d " + a, 2, "--demo"},
+      // Raw control and invalid UTF-8 bytes are shown escaped.
+      {two + "--cells 10 '--\x01\x1b[31m\xff'", 2, "\\x01\\x1b[31m\\xff"},
+  };
+  for(const Bad_arguments& c : cases)
+  {
+    const Result r = run(c.arguments);
+    EXPECT_EQ(r.status, c.status) << c.arguments << ": " << r.err;
+    EXPECT_TRUE(is_one_clean_line(r.err)) << c.arguments;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.arguments << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.arguments << ": " << r.out;
+  }
+}
+
+TEST_F(CsgTool, TooManyCellsIsRefusedWithTheEstimateAndTheLimit)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2));
+  const Result r = run(a + " " + a + " --op union --cells 2000000");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(is_one_clean_line(r.err));
+  EXPECT_EQ(r.err.find("not a whole number"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--cells 2000000"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("would have 8e+18 points"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("2^31"), std::string::npos) << r.err;
+  // Below the point limit but above a small memory limit: the estimate in GiB.
+  const Result m = run(a + " " + a + " --op union --cells 1000 --max-memory 0.5");
+  EXPECT_EQ(m.status, 1) << m.err;
+  EXPECT_TRUE(is_one_clean_line(m.err));
+  EXPECT_NE(m.err.find("GiB, more than the limit of 0.5 GiB (--max-memory)"), std::string::npos) << m.err;
+}
+
+TEST_F(CsgTool, FileProblemsAreNamedBeforeComputing)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), two = a + " " + a + " --op union --cells 10 ";
+  // A directory as an input, as an output.
+  Result r = run(m_dir + " " + a + " --op union --cells 10");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(is_one_clean_line(r.err));
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+  r = run(two + "-o " + m_dir);
+  EXPECT_EQ(r.status, 2); // no extension: a usage error
+  r = run(two + "-o " + m_dir + "/sub.off");
+  EXPECT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(mkdir((m_dir + "/dir.off").c_str(), 0755), 0);
+  r = run(two + "-o " + m_dir + "/dir.off");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+  // An unwritable output is found before any computation (nothing on stdout).
+  r = run(two + "-o " + m_dir + "/no/such/dir/out.off");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(is_one_clean_line(r.err));
+  EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  // The probe of a new output file does not leave it behind when a later
+  // step fails, and does not touch an existing one.
+  const std::string fresh = m_dir + "/fresh.off";
+  r = run(a + " " + m_dir + "/missing.off --op union --cells 10 -o " + fresh);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_FALSE(std::ifstream(fresh).good());
+  const std::string existing = write("existing.off", "keep me\n");
+  r = run(a + " " + m_dir + "/missing.off --op union --cells 10 -o " + existing);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(slurp(existing), "keep me\n");
+  // Garbage bytes in a file are not echoed.
+  const std::string garbage = write("garbage.off", "OFF\n\x01\x02\xff\xfe\x1b[2J 1 2\n");
+  r = run(a + " " + garbage + " --op union --cells 10");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(is_one_clean_line(r.err));
+}
+
+TEST_F(ContourTool, ContoursASampledSphere)
+{
+  const std::string out = m_dir + "/sphere.off";
+  const Result r = run(std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_GT(number_after(r.out, "triangles: "), 100) << r.out;
+  EXPECT_TRUE(std::ifstream(out).good());
+  const Result plain = run(std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn --max-jump inf");
+  EXPECT_EQ(plain.status, 0) << plain.err;
+}
+
+TEST_F(ContourTool, BadCommandLinesGetOneLineAndTheRightExit)
+{
+  const std::string sphere = std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn ";
+  const std::string garbage = write("garbage.pts", "\x01\x02\xff\xfe\x1b[2J 1 2\n");
+  const Bad_arguments cases[] = {
+      {sphere + "--k 2", 2, "at least 3"},
+      {sphere + "--k 1e9", 2, "above the limit of 1024"},
+      {sphere + "--k 7.5", 2, "not a whole number"},
+      {sphere + "--cell 0", 2, "positive"},
+      {sphere + "--cell nan", 2, "NaN"},
+      {sphere + "--cell inf", 2, "infinite"},
+      {sphere + "--cell ''", 2, "empty"},
+      {sphere + "--rho -1", 2, "positive"},
+      {sphere + "--delta -0.1", 2, "negative"},
+      {sphere + "--delta nan", 2, "NaN"},
+      {sphere + "--max-jump -1", 2, "negative"},
+      {sphere + "--max-jump 3x", 2, "not a number"},
+      {sphere + "--cells", 2, "needs a value"},
+      {sphere + "--cells 2000000", 2, "above the limit of 1048576"},
+      {sphere + "--cells 10 --cell 0.1", 2, "exclusive"},
+      {sphere + "--k 5 --k 6", 2, "more than once"},
+      {sphere + sphere, 2, "more than one input file"},
+      {sphere + "--bogus", 2, "unknown option"},
+      {sphere + "-o out.xyz", 2, "extension"},
+      {sphere + "-o", 2, "needs a value"},
+      {sphere + "'--\x01\xff'", 2, "\\x01\\xff"},
+      // Runtime problems: exit 1.
+      {m_dir, 1, "is a directory"},
+      {m_dir + "/missing.pts", 1, "cannot open"},
+      {sphere + "-o " + m_dir + "/no/such/dir/x.off", 1, "cannot write"},
+      {sphere + "--cells 100000", 1, "above the limit"},
+      {sphere + "--cell 1e-6", 1, "surface cubes"},
+  };
+  for(const Bad_arguments& c : cases)
+  {
+    const Result r = run(c.arguments);
+    EXPECT_EQ(r.status, c.status) << c.arguments << ": " << r.err;
+    EXPECT_TRUE(is_one_clean_line(r.err)) << c.arguments;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << c.arguments << ": " << r.err;
+  }
+  // Checked before reading: nothing on stdout.
+  EXPECT_TRUE(run(sphere + "-o " + m_dir + "/no/such/dir/x.off").out.empty());
+  // Garbage bytes from a file are escaped, never echoed raw.
+  const Result g = run(garbage);
+  EXPECT_EQ(g.status, 1);
+  EXPECT_TRUE(is_one_clean_line(g.err));
 }
 
 } // namespace
