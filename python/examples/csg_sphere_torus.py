@@ -33,11 +33,12 @@ def shaded(ax, V, F, colour):
     intensity = 0.25 + 0.75 * np.clip(n @ light, 0, 1)
     colours = np.clip(np.outer(intensity, colour), 0, 1)
     ax.add_collection3d(Poly3DCollection(T, facecolors=colours, edgecolors="none", linewidths=0))
-    ax.set_xlim(-1.1, 2.1)
-    ax.set_ylim(-1.6, 1.6)
-    ax.set_zlim(-1.6, 1.6)
-    ax.set_box_aspect((1, 1, 1))
-    ax.view_init(elev=28, azim=-62)
+    # the bounding box of the pair, equal scales on the three axes
+    ax.set_xlim(-1.05, 2.1)
+    ax.set_ylim(-1.2, 1.2)
+    ax.set_zlim(-1.05, 1.05)
+    ax.set_box_aspect((3.15, 2.4, 2.1), zoom=1.45)
+    ax.view_init(elev=32, azim=-58)
     ax.set_axis_off()
 
 
@@ -53,7 +54,7 @@ def main():
           f"(B, {len(torus[1])} triangles), {args.cells} cells, TBB {'on' if bi.parallel else 'off'}")
     print(f"  input volumes: sphere {bi.surveyor_volume(*sphere):.6f}, torus {bi.surveyor_volume(*torus):.6f}\n")
 
-    fig = plt.figure(figsize=(12, 4.4))
+    fig = plt.figure(figsize=(13.5, 4.6))
     colours = {"union": (0.35, 0.6, 0.95), "intersection": (0.95, 0.55, 0.3), "difference": (0.45, 0.8, 0.45)}
     for k, op in enumerate(("union", "intersection", "difference")):
         start = time.perf_counter()
@@ -70,8 +71,8 @@ def main():
         print(f"  volume {volume:.6f}\n")
         ax = fig.add_subplot(1, 3, k + 1, projection="3d")
         shaded(ax, V, F, np.array(colours[op]))
-        ax.set_title(f"{op}  ({info['expression']})\nvolume {volume:.4f}, {len(F)} triangles", fontsize=10)
-    fig.tight_layout()
+        ax.set_title(f"{op}  ({info['expression']})\nvolume {volume:.4f}, {len(F)} triangles", fontsize=11, pad=0)
+    fig.subplots_adjust(left=0, right=1, bottom=0, top=0.88, wspace=0)
     fig.savefig(args.output, dpi=110)
     print(f"picture: {args.output}")
 

@@ -209,3 +209,15 @@ def test_bad_input_raises_value_error(case):
         kwargs["smooth"], match = -1, "smooth"
     with pytest.raises(error, match=match):
         bi.boolean_isosurface(**kwargs)
+
+
+def test_smoothing_a_non_manifold_surface_raises():
+    # f0 xor f1 where the two zero sets cross: the regions touch along a
+    # curve, which no polygon mesh can represent.
+    n = 9
+    P = bi.grid_points((n, n, n), BOX)
+    f = np.stack([P[:, 0] - 0.01, P[:, 1] - 0.02], axis=1)
+    V, polygons, labels, creases, corners, info = bi.boolean_isosurface(grid=(n, n, n), box=BOX, fields=f,
+                                                                        expr="f0 & !f1 | !f0 & f1", close=True)
+    with pytest.raises(bi.InvalidInputError, match="smoothing: cannot make a polygon mesh"):
+        bi.boolean_isosurface(grid=(n, n, n), box=BOX, fields=f, expr="f0 & !f1 | !f0 & f1", close=True, smooth=2)

@@ -205,3 +205,32 @@ def test_csg_bad_input_raises_value_error(sphere_and_torus, case):
         meshes, error = [], bi.EmptyInputError
     with pytest.raises(error, match=match):
         bi.csg(meshes, expr, **kwargs)
+
+
+# ---------------------------------------------------------------- generators
+
+def test_icosphere_and_torus_are_closed_with_converging_volumes():
+    ball = 4 / 3 * math.pi
+    errors = []
+    for s in (2, 3, 4):
+        V, F = bi.icosphere((0, 0, 0), 1.0, s)
+        assert len(F) == 20 * 4 ** s
+        assert_closed_oriented_triangles(F)
+        v = bi.surveyor_volume(V, F)
+        assert v < ball  # inscribed
+        errors.append(ball - v)
+    assert errors[0] > 3.5 * errors[1] > 3.5 * 3.5 * errors[2]
+    V, F = bi.torus((0.9, 0, 0), 0.8, 0.35, 96, 48)
+    assert len(F) == 2 * 96 * 48
+    assert_closed_oriented_triangles(F)
+    assert bi.surveyor_volume(V, F) == pytest.approx(2 * math.pi ** 2 * 0.8 * 0.35 ** 2, rel=5e-3)
+    with pytest.raises(bi.InvalidInputError, match="major_radius > minor_radius"):
+        bi.torus((0, 0, 0), 0.3, 0.35)
+
+
+def test_non_contiguous_and_fortran_arrays_are_converted():
+    V, F = cube_mesh()
+    assert bi.surveyor_volume(np.asfortranarray(V), np.asfortranarray(F)) == 1.0
+    wide = np.zeros((8, 6))
+    wide[:, ::2] = V
+    assert bi.surveyor_volume(wide[:, ::2], F) == 1.0
