@@ -66,29 +66,31 @@ def triangulate(polygons, labels=None):
 
     Returns ``F``, an (m, 3) int64 array, or ``(F, face_labels)`` when
     ``labels`` is given (each triangle carries its polygon's label).
+    Polygon p with vertices v0 ... vk gives the triangles (v0, vi, vi+1), in
+    order, so F is ordered by polygon.
     """
     import numpy as np
 
-    rows = []
-    owners = []
-    for p, poly in enumerate(polygons):
-        poly = np.asarray(poly, dtype=np.int64)
-        if poly.ndim != 1 or len(poly) < 3:
-            raise ValueError(f"polygons[{p}] is not a polygon of at least 3 vertices")
-        k = len(poly) - 2
-        fan = np.empty((k, 3), dtype=np.int64)
-        fan[:, 0] = poly[0]
-        fan[:, 1] = poly[1:-1]
-        fan[:, 2] = poly[2:]
-        rows.append(fan)
-        owners.append(np.full(k, p, dtype=np.int64))
-    F = np.concatenate(rows) if rows else np.empty((0, 3), dtype=np.int64)
+    if isinstance(polygons, np.ndarray) and polygons.ndim == 2:
+        polygons = list(polygons)
+    lengths = np.fromiter((len(p) for p in polygons), dtype=np.int64, count=len(polygons))
+    if np.any(lengths < 3):
+        p = int(np.argmax(lengths < 3))
+        raise ValueError(f"polygons[{p}] has {lengths[p]} vertices; a polygon needs at least 3")
+    flat = (np.concatenate([np.asarray(p, dtype=np.int64).ravel() for p in polygons])
+            if len(polygons) else np.empty(0, dtype=np.int64))
+    starts = np.cumsum(lengths) - lengths
+    fans = lengths - 2
+    owner = np.repeat(np.arange(len(polygons)), fans)
+    # position of each triangle inside its polygon's fan: 0, 1, ..., k - 3
+    within = np.arange(len(owner)) - np.repeat(np.cumsum(fans) - fans, fans)
+    first = starts[owner]
+    F = np.stack([flat[first], flat[first + 1 + within], flat[first + 2 + within]], axis=1)
     if labels is None:
         return F
     labels = np.asarray(labels)
     if len(labels) != len(polygons):
         raise ValueError(f"labels has {len(labels)} entries but there are {len(polygons)} polygons")
-    owner = np.concatenate(owners) if owners else np.empty(0, dtype=np.int64)
     return F, labels[owner]
 
 

@@ -221,3 +221,11 @@ def test_smoothing_a_non_manifold_surface_raises():
                                                                         expr="f0 & !f1 | !f0 & f1", close=True)
     with pytest.raises(bi.InvalidInputError, match="smoothing: cannot make a polygon mesh"):
         bi.boolean_isosurface(grid=(n, n, n), box=BOX, fields=f, expr="f0 & !f1 | !f0 & f1", close=True, smooth=2)
+
+
+def test_triangulate_small_polygons_in_order():
+    F, l = bi.triangulate([np.array([0, 1, 2]), np.array([3, 4, 5, 6, 7]), [8, 9, 10, 11]], [5, 6, 7])
+    assert F.tolist() == [[0, 1, 2], [3, 4, 5], [3, 5, 6], [3, 6, 7], [8, 9, 10], [8, 10, 11]]
+    assert l.tolist() == [5, 6, 6, 6, 7, 7]
+    with pytest.raises(ValueError, match="at least 3"):
+        bi.triangulate([[0, 1]])
