@@ -234,3 +234,25 @@ def test_non_contiguous_and_fortran_arrays_are_converted():
     wide = np.zeros((8, 6))
     wide[:, ::2] = V
     assert bi.surveyor_volume(wide[:, ::2], F) == 1.0
+
+
+def test_volume_reads_contiguous_inputs_in_place():
+    # numpy reports its allocations to tracemalloc: a converted copy of the
+    # inputs would show up in the peak, a view does not.
+    import tracemalloc
+
+    V, F = sphere_mesh(rings=200, segments=400)  # 80K vertices: a copy of V is 1.9 MB, of F 3.8 MB
+    assert V.flags.c_contiguous and V.dtype == np.float64 and F.dtype == np.int64
+    tracemalloc.start()
+    try:
+        tracemalloc.reset_peak()
+        bi.surveyor_volume(V, F)
+        _, in_place = tracemalloc.get_traced_memory()
+        F32 = F.astype(np.int32)
+        tracemalloc.reset_peak()
+        bi.surveyor_volume(V, F32)
+        _, converted = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert in_place < 1_000_000
+    assert converted > F.nbytes  # the int32 indices were converted to int64 (the check can fail)
