@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <sys/stat.h>
@@ -43,6 +44,20 @@ static_assert(sizeof(std::size_t) == sizeof(std::int64_t), "64-bit indices expec
 
 typedef py::array_t<double, py::array::c_style | py::array::forcecast> Double_array;
 typedef py::array_t<std::int64_t, py::array::c_style> Index_array;
+
+/// The library's progress callback, used to make long calls interruptible:
+/// called from the calling thread between batches of work, it takes the GIL
+/// back for a moment and lets Python run its signal handlers, so that
+/// Ctrl-C (KeyboardInterrupt) stops the call there.
+struct Check_python_signals
+{
+  void operator()(double) const
+  {
+    py::gil_scoped_acquire gil;
+    if(PyErr_CheckSignals() != 0)
+      throw py::error_already_set();
+  }
+};
 
 /// A file that cannot be opened: becomes OSError(errno, message, path), so
 /// FileNotFoundError / PermissionError where errno says so.

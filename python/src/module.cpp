@@ -248,7 +248,10 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
     const std::size_t memory = max_memory_bytes ? *max_memory_bytes : BI::Lattice_classifier_3::default_max_memory_bytes;
     statistics = with_threads(threads, [&] {
       return BI::marching_cubes_csg<CGAL::Parallel_if_available_tag>(meshes, expression, *lattice, points, triangles,
-                                                                      BI::parameters::max_memory_bytes(memory));
+                                                                      BI::parameters::progress(
+                                                                          std::function<void(double)>(
+                                                                              Check_python_signals()),
+                                                                          BI::parameters::max_memory_bytes(memory)));
     });
     total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -707,7 +710,8 @@ cells: lattice cells along the longest side of the bounding box (default
 128), or spacing: the lattice spacing (give at most one).  shift=True moves
 the lattice by 0.382 cell off the bounding box (as the csg tool), so that
 axis-aligned faces on it do not lie on lattice planes.  threads: TBB worker
-threads (0: all cores); the output does not depend on it.
+threads (0: all cores); the output does not depend on it.  Ctrl-C
+(KeyboardInterrupt) stops it between batches of work.
 
 Returns (V, F, info): V (k, 3) float64, F (t, 3) int64 outward triangles,
 closed and 2-manifold when info["closed"]; info holds the lattice, the

@@ -183,7 +183,9 @@ py::tuple boolean_isosurface_py(const py::handle& fields_object, const std::stri
   std::optional<double> volume;
   {
     py::gil_scoped_release release;
-    const auto np = BI::parameters::close_at_domain_boundary(close, BI::parameters::slab_layers(slab_layers));
+    const auto np = BI::parameters::close_at_domain_boundary(
+        close, BI::parameters::slab_layers(slab_layers, BI::parameters::progress(std::function<void(double)>(
+                                                             Check_python_signals()))));
     stats = with_threads(threads, [&] {
       return grid_domain ? BI::extract_boolean_isosurface<CGAL::Parallel_if_available_tag>(*grid_domain, fields,
                                                                                              expression, soup, np)
@@ -469,7 +471,8 @@ close=True closes the set where it reaches the boundary of the domain.
 smooth=k runs k lambda|mu iterations of crease-preserving smoothing
 (creases and corners stay put).  slab_layers: cube layers per parallel
 task (0: the default); threads: TBB threads (0: all); the output does not
-depend on either.  Every combinatorial decision is exact.
+depend on either.  Ctrl-C (KeyboardInterrupt) stops the extraction between
+batches of slabs.  Every combinatorial decision is exact.
 
 Returns (V, polygons, labels, creases, corners, info): V (k, 3) float64;
 polygons a list of int64 index arrays (convex, planar, outward); labels

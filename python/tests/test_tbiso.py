@@ -229,3 +229,25 @@ def test_triangulate_small_polygons_in_order():
     assert l.tolist() == [5, 6, 6, 6, 7, 7]
     with pytest.raises(ValueError, match="at least 3"):
         bi.triangulate([[0, 1]])
+
+
+def test_boolean_isosurface_can_be_interrupted():
+    import _thread
+    import threading
+    import time
+
+    n = 161
+    P = bi.grid_points((n, n, n), BOX)
+    f = np.stack([np.linalg.norm(P - 0.1, axis=1) - 0.6, np.sin(7 * P[:, 0]) * np.cos(5 * P[:, 1]) + P[:, 2]], 1)
+    start = time.perf_counter()
+    bi.boolean_isosurface(grid=(n, n, n), box=BOX, fields=f, expr="f0 & f1")
+    full = time.perf_counter() - start
+    timer = threading.Timer(0.02, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        bi.boolean_isosurface(grid=(n, n, n), box=BOX, fields=f, expr="f0 & f1")
+        time.sleep(60)  # reached only if the call was not interrupted
+    interrupted = time.perf_counter() - start
+    timer.join()
+    assert interrupted < 0.5 * full, (interrupted, full)

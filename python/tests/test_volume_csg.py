@@ -256,3 +256,24 @@ def test_volume_reads_contiguous_inputs_in_place():
         tracemalloc.stop()
     assert in_place < 1_000_000
     assert converted > F.nbytes  # the int32 indices were converted to int64 (the check can fail)
+
+
+def test_csg_can_be_interrupted(sphere_and_torus):
+    # Ctrl-C: the library's progress callback lets Python handle signals
+    # between batches of work.  The interrupted call must end well before an
+    # uninterrupted one would.
+    import _thread
+
+    A, B = sphere_and_torus
+    start = time.perf_counter()
+    bi.csg([A, B], "A | B", cells=256)
+    full = time.perf_counter() - start
+    timer = threading.Timer(0.02, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        bi.csg([A, B], "A | B", cells=256)
+        time.sleep(60)  # reached only if the call was not interrupted: the interrupt then lands here
+    interrupted = time.perf_counter() - start
+    timer.join()
+    assert interrupted < 0.5 * full, (interrupted, full)
