@@ -314,6 +314,10 @@ void extract_boolean_isosurface_slab_range(const Tetrahedral_grid_3<GeomTraits>&
     internal::Tbiso_chunk chunk;
   };
   std::vector<Slot> slots((std::min)(window, (std::max<std::size_t>)(1, number_of_slabs)));
+  // Each slot keeps its buffer: sized once for the largest slab (plus two
+  // ghost layers and rounding), it is never reallocated.
+  for(Slot& slot : slots)
+    slot.values.reserve(((std::min)(slab, last_layer - first_layer) + 3) * layer_size * N);
   std::unordered_map<Key, std::size_t, internal::Tbiso_vertex_key_hash> below, above;
   std::vector<std::size_t> to_local;
 

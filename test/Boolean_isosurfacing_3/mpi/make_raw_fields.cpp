@@ -14,9 +14,11 @@
 
 int main(int argc, char** argv)
 {
-  if(argc != 5)
+  // nan-at-end: the last vertex's f0 is NaN (an error only the last rank sees).
+  const bool nan_at_end = argc == 6 && std::strcmp(argv[5], "nan-at-end") == 0;
+  if(argc != 5 && !nan_at_end)
   {
-    std::fprintf(stderr, "usage: make_raw_fields NX NY NZ OUT.f64|OUT.f32\n");
+    std::fprintf(stderr, "usage: make_raw_fields NX NY NZ OUT.f64|OUT.f32 [nan-at-end]\n");
     return 2;
   }
   const long nx = std::atol(argv[1]), ny = std::atol(argv[2]), nz = std::atol(argv[3]);
@@ -47,6 +49,8 @@ int main(int argc, char** argv)
         v[1] = std::sqrt((x + 0.3) * (x + 0.3) + (y - 0.2) * (y - 0.2) + (z - 0.3) * (z - 0.3)) - 0.45;
         v[2] = double(k - nz / 2);
         v[3] = double(i + j - (nx + ny) / 2);
+        if(nan_at_end && k == nz - 1 && j == ny - 1 && i == nx - 1)
+          v[0] = std::nan("");
       }
       if(f32)
       {
