@@ -1,12 +1,12 @@
 # Runs a tool once in one process and once under mpirun with --distributed,
 # and fails unless the two output files are byte-identical.
-#   -DSINGLE="tool|arg|..."   the single-process command (| separates words)
-#   -DDISTRIBUTED="tool|arg|..." the distributed command, without mpirun
-#   -DMPIEXEC=... -DNP=K -DMPIEXEC_FLAGS="flag|flag"
+#   -DSINGLE="tool~arg~..."   the single-process command (~ separates words: expressions use |)
+#   -DDISTRIBUTED="tool~arg~..." the distributed command, without mpirun
+#   -DMPIEXEC=... -DNP=K -DMPIEXEC_FLAGS="flag~flag"
 #   -DSINGLE_OUTPUT=file -DDISTRIBUTED_OUTPUT=file
-#   -DPREPARE="cmd|arg|..." optional, run first (makes the input)
+#   -DPREPARE="cmd~arg~..." optional, run first (makes the input)
 foreach(var SINGLE DISTRIBUTED PREPARE MPIEXEC_FLAGS)
-  string(REPLACE "|" ";" ${var} "${${var}}")
+  string(REPLACE "~" ";" ${var} "${${var}}")
 endforeach()
 file(REMOVE "${SINGLE_OUTPUT}" "${DISTRIBUTED_OUTPUT}")
 if(PREPARE)

@@ -1,9 +1,9 @@
 # Runs a distributed command that must fail: non-zero exit, within the
 # timeout (no rank left waiting), with MESSAGE on stderr, exactly once.
-#   -DCOMMAND="tool|arg|..." -DMPIEXEC=... -DNP=K -DMPIEXEC_FLAGS="flag|flag" -DMESSAGE=text
-#   -DPREPARE="cmd|arg|..." optional
+#   -DCOMMAND="tool~arg~..." -DMPIEXEC=... -DNP=K -DMPIEXEC_FLAGS="flag~flag" -DMESSAGE=text
+#   -DPREPARE="cmd~arg~..." optional
 foreach(var COMMAND PREPARE MPIEXEC_FLAGS)
-  string(REPLACE "|" ";" ${var} "${${var}}")
+  string(REPLACE "~" ";" ${var} "${${var}}")
 endforeach()
 if(PREPARE)
   execute_process(COMMAND ${PREPARE} RESULT_VARIABLE status)
