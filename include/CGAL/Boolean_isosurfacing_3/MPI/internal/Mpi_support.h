@@ -9,6 +9,13 @@
 // collective), prefix sums, the one neighbour exchange, and byte-range file
 // I/O in pieces below MPI's int counts.
 
+// Only MPI's C interface is used: skip the deprecated C++ bindings (and their warnings).
+#ifndef OMPI_SKIP_MPICXX
+#  define OMPI_SKIP_MPICXX 1
+#endif
+#ifndef MPICH_SKIP_MPICXX
+#  define MPICH_SKIP_MPICXX 1
+#endif
 #include <mpi.h>
 
 #include <algorithm>
