@@ -472,8 +472,22 @@ void parse(int argc, char** argv, Options& options, bool& help)
 
 } // namespace
 
+#ifdef BISO_WITH_MPI
+int csg_distributed_main(int argc, char** argv); // csg_distributed.cpp
+#endif
+
 int main(int argc, char** argv)
 {
+  for(int i = 1; i < argc; ++i)
+    if(std::string(argv[i]) == "--distributed")
+    {
+#ifdef BISO_WITH_MPI
+      return csg_distributed_main(argc, argv);
+#else
+      std::cerr << "csg: --distributed: this csg was built without MPI\n";
+      return 1;
+#endif
+    }
   Options options;
   try
   {

@@ -880,8 +880,22 @@ int run_demo(Options o)
 
 } // namespace
 
+#ifdef BISO_WITH_MPI
+int tbiso_distributed_main(int argc, char** argv); // tbiso_distributed.cpp
+#endif
+
 int main(int argc, char** argv)
 {
+  for(int i = 1; i < argc; ++i)
+    if(std::string(argv[i]) == "--distributed")
+    {
+#ifdef BISO_WITH_MPI
+      return tbiso_distributed_main(argc, argv);
+#else
+      std::cerr << "tbiso: error: --distributed: this tbiso was built without MPI\n";
+      return 1;
+#endif
+    }
   try
   {
     Options options;

@@ -180,7 +180,34 @@ public:
     return enclosing(box, longest / double(cells), margin_cells);
   }
 
+  /// The points of this lattice whose z index is in `[k_begin, k_end]`, as
+  /// a lattice of their own with *the same coordinates*: its point
+  /// `(i, j, k)` is point `(i, j, k_begin + k)` of this one, its coordinate
+  /// `coordinate(2, k)` is `origin[2] + double(k_begin + k) * spacing`
+  /// (bit for bit).  A lattice `origin + ...` starting at the first point's
+  /// coordinate would round differently, and the exact predicates would see
+  /// another lattice.  This is what lets a z slab of a lattice be classified
+  /// on its own (`marching_cubes_csg_slab_range()`).
+  /// \pre `k_begin <= k_end < number_of_points(2)`
+  Regular_lattice_3 z_range(std::size_t k_begin, std::size_t k_end) const
+  {
+    if(!(k_begin <= k_end && k_end < m_number_of_points[2]))
+      throw Invalid_input_error("the z range [" + std::to_string(k_begin) + ", " + std::to_string(k_end) +
+                                "] is not within the lattice's " + std::to_string(m_number_of_points[2]) +
+                                " planes");
+    Regular_lattice_3 result(*this);
+    result.m_first[2] += k_begin;
+    result.m_number_of_points[2] = k_end - k_begin + 1;
+    return result;
+  }
+
+  /// The index, in the lattice this one was cut from by `z_range()`, of
+  /// this lattice's first point along `axis` (0 for a lattice of its own).
+  std::size_t first_index(int axis) const { return m_first[axis]; }
+
   double spacing() const { return m_spacing; }
+  /// The origin of the coordinate formula: for a lattice made by `z_range()`
+  /// it is that of the lattice it was cut from.
   const std::array<double, 3>& origin() const { return m_origin; }
   const std::array<std::size_t, 3>& number_of_points() const { return m_number_of_points; }
   std::size_t number_of_points(int axis) const { return m_number_of_points[axis]; }
@@ -193,7 +220,7 @@ public:
   /// \pre `0 <= axis < 3`; `i` may exceed the number of points (the formula extends the lattice).
   double coordinate(int axis, std::size_t i) const
   {
-    return internal::lattice_coordinate(m_origin[axis], m_spacing, i);
+    return internal::lattice_coordinate(m_origin[axis], m_spacing, m_first[axis] + i);
   }
 
   /// Index of point `(i, j, k)` in arrays over the lattice: `i` varies fastest.
@@ -208,7 +235,7 @@ public:
   std::size_t first_index_not_below(int axis, double value) const
   {
     const std::size_t n = m_number_of_points[axis];
-    const double estimate = std::ceil((value - m_origin[axis]) / m_spacing);
+    const double estimate = std::ceil((value - m_origin[axis]) / m_spacing) - double(m_first[axis]);
     std::size_t i;
     if(!(estimate > 0)) // also NaN
       i = 0;
@@ -233,7 +260,8 @@ public:
 
   friend bool operator==(const Regular_lattice_3& a, const Regular_lattice_3& b)
   {
-    return a.m_origin == b.m_origin && a.m_spacing == b.m_spacing && a.m_number_of_points == b.m_number_of_points;
+    return a.m_origin == b.m_origin && a.m_spacing == b.m_spacing && a.m_number_of_points == b.m_number_of_points &&
+           a.m_first == b.m_first;
   }
   friend bool operator!=(const Regular_lattice_3& a, const Regular_lattice_3& b) { return !(a == b); }
 
@@ -274,6 +302,7 @@ private:
   std::array<double, 3> m_origin;
   double m_spacing;
   std::array<std::size_t, 3> m_number_of_points;
+  std::array<std::size_t, 3> m_first{{0, 0, 0}}; // see z_range()
 };
 
 } // namespace Boolean_isosurfacing

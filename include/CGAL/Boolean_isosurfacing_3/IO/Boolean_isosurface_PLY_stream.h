@@ -51,28 +51,59 @@ public:
 
   void add_point(const std::array<double, 3>& p)
   {
-    for(double c : p)
-      CGAL::Boolean_isosurfacing::internal::put_little_endian(m_buffer, c);
+    append_point(m_buffer, p);
     ++m_vertices;
     flush(m_out, m_buffer);
   }
 
   void add_polygon(const std::size_t* v, std::size_t n, int field)
   {
+    append_polygon(m_face_buffer, v, n, field);
+    ++m_polygons;
+    flush(m_faces, m_face_buffer);
+  }
+
+  /// The bytes of one vertex record, appended to `out`.  With `header()` and
+  /// `append_polygon()`, they let a writer that assembles the file from
+  /// pieces (the MPI driver writes each rank's part at its offset) produce
+  /// the very bytes of this stream.
+  static void append_point(std::string& out, const std::array<double, 3>& p)
+  {
+    for(double c : p)
+      CGAL::Boolean_isosurfacing::internal::put_little_endian(out, c);
+  }
+
+  /// The bytes of one face record (`v` are global vertex indices), appended to `out`.
+  /// \throws Invalid_input_error if the polygon has more than 255 vertices or an index exceeds 2^31 - 1.
+  static void append_polygon(std::string& out, const std::size_t* v, std::size_t n, int field)
+  {
     if(n > 255)
       throw Invalid_input_error("a polygon of " + std::to_string(n) + " vertices does not fit a PLY uchar list");
-    CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::uint8_t>(n));
+    CGAL::Boolean_isosurfacing::internal::put_little_endian(out, static_cast<std::uint8_t>(n));
     for(std::size_t k = 0; k < n; ++k)
     {
       if(v[k] > std::size_t((std::numeric_limits<std::int32_t>::max)()))
         throw Invalid_input_error("too many points for PLY int indices");
-      CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::int32_t>(v[k]));
+      CGAL::Boolean_isosurfacing::internal::put_little_endian(out, static_cast<std::int32_t>(v[k]));
     }
-    CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::int32_t>(field));
+    CGAL::Boolean_isosurfacing::internal::put_little_endian(out, static_cast<std::int32_t>(field));
     for(unsigned char c : field_color(field))
-      CGAL::Boolean_isosurfacing::internal::put_little_endian(m_face_buffer, static_cast<std::uint8_t>(c));
-    ++m_polygons;
-    flush(m_faces, m_face_buffer);
+      CGAL::Boolean_isosurfacing::internal::put_little_endian(out, static_cast<std::uint8_t>(c));
+  }
+
+  /// The header of a file with these counts; its length does not depend on them.
+  static std::string header(std::size_t vertices, std::size_t polygons)
+  {
+    char v[32], f[32];
+    std::snprintf(v, sizeof v, "%020zu", vertices);
+    std::snprintf(f, sizeof f, "%020zu", polygons);
+    return std::string("ply\nformat binary_little_endian 1.0\n") +
+           "comment Boolean_isosurfacing_3: field = index of the scalar field the face lies on, "
+           "-1 = domain boundary\n" +
+           "element vertex " + v + "\n" + "property double x\nproperty double y\nproperty double z\n" +
+           "element face " + f + "\n" +
+           "property list uchar int vertex_indices\nproperty int field\n" +
+           "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
   }
 
   std::size_t number_of_points() const { return m_vertices; }
@@ -107,20 +138,7 @@ private:
   }
 
   // Fixed-width counts (20 digits, zero padded) so that close() can rewrite them in place.
-  void write_header()
-  {
-    char vertices[32], faces[32];
-    std::snprintf(vertices, sizeof vertices, "%020zu", m_vertices);
-    std::snprintf(faces, sizeof faces, "%020zu", m_polygons);
-    m_out << "ply\nformat binary_little_endian 1.0\n"
-          << "comment Boolean_isosurfacing_3: field = index of the scalar field the face lies on, "
-             "-1 = domain boundary\n"
-          << "element vertex " << vertices << "\n"
-          << "property double x\nproperty double y\nproperty double z\n"
-          << "element face " << faces << "\n"
-          << "property list uchar int vertex_indices\nproperty int field\n"
-          << "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
-  }
+  void write_header() { m_out << header(m_vertices, m_polygons); }
 
   std::string m_filename, m_faces_filename;
   std::ofstream m_out, m_faces;

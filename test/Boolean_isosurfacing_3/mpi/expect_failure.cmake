@@ -1,0 +1,31 @@
+# Runs a distributed command that must fail: non-zero exit, within the
+# timeout (no rank left waiting), with MESSAGE on stderr, exactly once.
+#   -DCOMMAND="tool~arg~..." -DMPIEXEC=... -DNP=K -DMPIEXEC_FLAGS="flag~flag" -DMESSAGE=text
+#   -DPREPARE="cmd~arg~..." optional
+foreach(var COMMAND PREPARE MPIEXEC_FLAGS)
+  string(REPLACE "~" ";" ${var} "${${var}}")
+endforeach()
+if(PREPARE)
+  execute_process(COMMAND ${PREPARE} RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "preparing the input failed (${status})")
+  endif()
+endif()
+execute_process(COMMAND ${MPIEXEC} -np ${NP} ${MPIEXEC_FLAGS} ${COMMAND} RESULT_VARIABLE status
+                OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+if(status EQUAL 0)
+  message(FATAL_ERROR "the run succeeded but should have failed:\n${out}")
+endif()
+if(NOT status MATCHES "^[0-9]+$")
+  message(FATAL_ERROR "the run did not end by itself (${status}): a rank was left waiting?")
+endif()
+string(FIND "${err}" "${MESSAGE}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "stderr does not say '${MESSAGE}':\n${err}")
+endif()
+string(REGEX MATCHALL "error: " lines "${err}")
+list(LENGTH lines count)
+if(count GREATER 1)
+  message(FATAL_ERROR "the error was printed ${count} times (once expected):\n${err}")
+endif()
+message("failed as expected (${status}): ${MESSAGE}")

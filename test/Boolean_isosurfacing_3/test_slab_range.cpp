@@ -1,0 +1,221 @@
+// The slab-range API without MPI: ranks simulated in one process, each
+// extracting its own range and welding through the documented messages
+// (TBISO: top-layer keys up, a prefix sum of new-vertex counts; CSG: the
+// first plane's lattice-edge ids down, a prefix sum of owned counts).  The
+// assembled surface must be the sequential one exactly: same doubles, same
+// numbering, same polygon order, for part counts that divide the layers and
+// part counts that do not.
+
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_by_slabs.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_slab_range.h>
+#include <CGAL/Boolean_isosurfacing_3/generators.h>
+#include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
+#include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg_slab_range.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace BI = CGAL::Boolean_isosurfacing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef BI::Tetrahedral_grid_3<K> Grid;
+typedef BI::Boolean_isosurface_soup<Point> Soup;
+typedef std::function<double(const Point&)> Field;
+
+namespace {
+
+Field sphere(double cx, double cy, double cz, double r)
+{
+  return [=](const Point& p) {
+    const double x = p.x() - cx, y = p.y() - cy, z = p.z() - cz;
+    return std::sqrt(x * x + y * y + z * z) - r;
+  };
+}
+
+// The surface of `parts` simulated ranks, assembled as the MPI driver does.
+Soup tbiso_by_parts(const Grid& grid, const BI::Scalar_fields& fields, const BI::Boolean_expression& e,
+                    std::size_t parts, bool close)
+{
+  const std::size_t layers = grid.vertex_counts()[2] - 1;
+  std::vector<BI::Boolean_isosurface_slab_range> ranges(parts);
+  BI::Scalar_fields_source source(fields);
+  for(std::size_t r = 0; r < parts; ++r)
+  {
+    const auto range = BI::slab_range_of_part(layers, r, parts);
+    BI::extract_boolean_isosurface_slab_range(grid, source, e, range.first, range.second, ranges[r],
+                                              BI::parameters::close_at_domain_boundary(close, BI::parameters::slab_layers(3)));
+  }
+  std::vector<BI::Boolean_isosurface_slab_range_welding> welding(parts);
+  std::vector<std::size_t> offset(parts + 1, 0);
+  for(std::size_t r = 0; r < parts; ++r)
+  {
+    const bool has_below = r > 0 && ranges[r].first_layer < ranges[r].last_layer;
+    welding[r] = BI::match_boolean_isosurface_slab_range(
+        ranges[r], has_below ? BI::top_layer_message(ranges[r - 1]) : std::vector<std::uint64_t>());
+    offset[r + 1] = offset[r] + welding[r].number_of_new_vertices;
+  }
+  Soup soup;
+  soup.points.resize(offset[parts], Point(0, 0, 0));
+  for(std::size_t r = 0; r < parts; ++r)
+  {
+    const std::vector<std::size_t> global = BI::global_vertex_indices(ranges[r], welding[r], offset[r]);
+    for(std::size_t v = 0; v < global.size(); ++v)
+      if(global[v] >= offset[r])
+      {
+        const std::array<double, 3>& p = ranges[r].points[v];
+        soup.points[global[v]] = Point(p[0], p[1], p[2]);
+      }
+    for(std::size_t p = 0; p < ranges[r].number_of_polygons(); ++p)
+    {
+      std::vector<std::size_t> polygon;
+      for(std::size_t k = ranges[r].polygon_begin[p]; k < ranges[r].polygon_begin[p + 1]; ++k)
+        polygon.push_back(global[ranges[r].polygon_vertices[k]]);
+      soup.polygons.push_back(polygon);
+      soup.face_fields.push_back(ranges[r].labels[p]);
+    }
+  }
+  return soup;
+}
+
+} // namespace
+
+TEST(SlabRange, PartsCoverTheLayersWithAtLeastTwoEach)
+{
+  for(std::size_t layers : {2, 3, 7, 37, 100})
+    for(std::size_t parts : {1, 2, 3, 4, 5, 20, 64})
+    {
+      std::size_t next = 0, nonempty = 0;
+      for(std::size_t r = 0; r < parts; ++r)
+      {
+        const auto range = BI::slab_range_of_part(layers, r, parts);
+        if(range.first == range.second)
+        {
+          EXPECT_EQ(range.first, layers);
+          continue;
+        }
+        EXPECT_EQ(range.first, next);
+        EXPECT_GE(range.second - range.first, 2u);
+        next = range.second;
+        ++nonempty;
+      }
+      EXPECT_EQ(next, layers) << layers << " layers, " << parts << " parts";
+      EXPECT_EQ(nonempty, std::min(parts, std::max<std::size_t>(1, layers / 2)));
+    }
+}
+
+TEST(SlabRange, TbisoRangesWeldToTheSequentialSurface)
+{
+  // 28 cube layers; the plane f2 vanishes exactly on vertex layer 14 (the
+  // boundary of the 2-part split): faces in the shared layer.
+  const Grid grid = Grid::spanning(Point(-1, -1, -1), Point(1, 1, 1), {17, 15, 29});
+  const std::vector<Field> f{sphere(0.2, 0, 0, 0.6), sphere(-0.2, 0.1, 0.1, 0.5),
+                             [](const Point& p) { return p.z(); }};
+  const BI::Scalar_fields fields = BI::sample_fields(grid, f);
+  const BI::Boolean_expression e = BI::Boolean_expression::parse("f0 & !f1 | f1 & f2");
+  for(bool close : {false, true})
+  {
+    Soup sequential;
+    BI::extract_boolean_isosurface(grid, fields, e, sequential, BI::parameters::close_at_domain_boundary(close));
+    ASSERT_GT(sequential.polygons.size(), 100u);
+    for(std::size_t parts : {1, 2, 3, 5, 14, 20})
+    {
+      const Soup soup = tbiso_by_parts(grid, fields, e, parts, close);
+      ASSERT_EQ(soup.points.size(), sequential.points.size()) << parts << " parts";
+      for(std::size_t v = 0; v < soup.points.size(); ++v)
+        ASSERT_EQ(soup.points[v], sequential.points[v]) << "point " << v << ", " << parts << " parts";
+      EXPECT_EQ(soup.polygons, sequential.polygons) << parts << " parts";
+      EXPECT_EQ(soup.face_fields, sequential.face_fields) << parts << " parts";
+    }
+  }
+}
+
+TEST(SlabRange, TbisoRefusesAThinRangeBelow)
+{
+  // A one-layer middle range interleaves its bottom and top vertices: the
+  // cancellation the one-message weld relies on fails, and the match says so.
+  const Grid grid = Grid::spanning(Point(-1, -1, -1), Point(1, 1, 1), {9, 9, 9});
+  const BI::Scalar_fields fields = BI::sample_fields(grid, std::vector<Field>{sphere(0, 0, 0, 0.7)});
+  const BI::Boolean_expression e = BI::Boolean_expression::parse("f0");
+  BI::Scalar_fields_source source(fields);
+  BI::Boolean_isosurface_slab_range thin, above;
+  BI::extract_boolean_isosurface_slab_range(grid, source, e, 3, 4, thin);
+  BI::extract_boolean_isosurface_slab_range(grid, source, e, 4, 8, above);
+  ASSERT_FALSE(thin.bottom_vertices.empty());
+  ASSERT_FALSE(thin.top_vertices.empty());
+  EXPECT_THROW(BI::match_boolean_isosurface_slab_range(above, BI::top_layer_message(thin)), BI::Invalid_input_error);
+}
+
+TEST(SlabRange, LatticeZRangeKeepsTheCoordinates)
+{
+  const BI::Regular_lattice_3 lattice({-1.1, 0.3, -2.7}, 0.1, {5, 6, 40});
+  const BI::Regular_lattice_3 sub = lattice.z_range(13, 29);
+  ASSERT_EQ(sub.number_of_points(2), 17u);
+  for(std::size_t k = 0; k < 17; ++k)
+    EXPECT_EQ(sub.coordinate(2, k), lattice.coordinate(2, 13 + k));
+  for(std::size_t k = 0; k <= 17; ++k)
+    EXPECT_EQ(sub.first_index_not_below(2, lattice.coordinate(2, 13 + k)), k);
+  EXPECT_EQ(sub.first_index_not_below(2, -100), 0u);
+  EXPECT_EQ(sub.first_index_not_below(2, 100), 17u);
+  EXPECT_NE(sub, BI::Regular_lattice_3(lattice.origin(), 0.1, {5, 6, 17}));
+  EXPECT_THROW(lattice.z_range(30, 40), BI::Invalid_input_error);
+}
+
+TEST(SlabRange, CsgRangesWeldToTheSequentialSurface)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  std::vector<Mesh> meshes(2);
+  BI::make_icosphere(meshes[0], Point(0, 0, 0), 1.0, 3);
+  BI::make_torus(meshes[1], Point(0.9, 0, 0.1), 0.8, 0.35, 48, 24);
+  CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(meshes[0]) + CGAL::Polygon_mesh_processing::bbox(meshes[1]);
+  const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(box, 33);
+  for(const BI::Boolean_expression& e : {BI::Boolean_expression::union_of(2), BI::Boolean_expression::difference()})
+  {
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    BI::marching_cubes_csg(meshes, e, lattice, points, triangles);
+    ASSERT_GT(triangles.size(), 100u);
+    const std::size_t layers = lattice.number_of_points(2) - 1;
+    for(std::size_t parts : {1, 2, 3, 4, 7})
+    {
+      std::vector<BI::Marching_cubes_csg_slab_range> ranges(parts);
+      for(std::size_t r = 0; r < parts; ++r)
+      {
+        const auto range = BI::slab_range_of_part(layers, r, parts);
+        BI::marching_cubes_csg_slab_range(meshes, e, lattice, range.first, range.second, ranges[r]);
+      }
+      std::vector<std::size_t> offset(parts + 1, 0);
+      for(std::size_t r = 0; r < parts; ++r)
+        offset[r + 1] = offset[r] + ranges[r].points.size();
+      std::vector<std::array<double, 3>> all_points;
+      std::vector<std::array<std::size_t, 3>> all_triangles;
+      for(std::size_t r = 0; r < parts; ++r)
+      {
+        const BI::Marching_cubes_csg_slab_range& g = ranges[r];
+        const std::vector<std::size_t> top =
+            r + 1 < parts && ranges[r + 1].first_layer < ranges[r + 1].last_layer
+                ? BI::top_vertex_indices(g, ranges[r + 1].bottom_edges, offset[r + 1])
+                : std::vector<std::size_t>();
+        ASSERT_EQ(top.size(), g.top_edges.size());
+        all_points.insert(all_points.end(), g.points.begin(), g.points.end());
+        for(const std::array<std::size_t, 3>& t : g.triangles)
+        {
+          std::array<std::size_t, 3> u;
+          for(int v = 0; v < 3; ++v)
+            u[v] = t[v] < g.points.size() ? offset[r] + t[v] : top[t[v] - g.points.size()];
+          all_triangles.push_back(u);
+        }
+      }
+      EXPECT_EQ(all_points, points) << parts << " parts";
+      EXPECT_EQ(all_triangles, triangles) << parts << " parts";
+    }
+  }
+}
