@@ -832,5 +832,6 @@ TEST(Boolean_expression_cost, the_work_limit_is_an_error_not_a_hang)
   {
     EXPECT_TRUE(contains(e.what(), "term comparisons (the limit of Boolean_expression)")) << e.what();
   }
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+  // Generous (a shared, loaded machine): the point is no hang.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3.0);
 }

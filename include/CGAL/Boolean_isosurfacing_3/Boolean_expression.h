@@ -153,11 +153,11 @@ inline void sort_canonically(std::vector<Boolean_term>& terms)
 }
 
 // Bounds the total work of absorption (pairs of terms compared) in one
-// parse or one operator: each step is already bounded (candidates x kept
-// terms), but a long text can chain thousands of steps.  2^28 comparisons is
-// well under a second, and about 30 times what the largest expression of the
-// tests at the term limit needs.
-constexpr std::size_t max_absorption_work = std::size_t(1) << 28;
+// parse: each step is already bounded (candidates x kept terms), but a long
+// text can chain thousands of steps.  2^27 comparisons take about half a
+// second; the 4 KB products at the term limit of the tests need 0.5 to 26
+// million.
+constexpr std::size_t max_absorption_work = std::size_t(1) << 27;
 
 struct Absorption_budget
 {
