@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses of test/fuzz with clang (ASan + UBSan) in
 # build-fuzz/ and runs each for SECONDS seconds (default 30).  Fails if any
-# harness finds a crash, a sanitizer report, an input slower than 10 s, an
+# harness finds a crash, a sanitizer report, an input slower than 25 s, an
 # allocation over 64 MB (a size taken from a header count), or more than
 # 2 GB of memory.  Findings are kept in build-fuzz/artifacts/.
 #
@@ -34,7 +34,7 @@ for target in $targets; do
   mkdir -p "$build/corpus/$target"
   log="$build/artifacts/$target.log"
   echo "== $target: ${seconds} s"
-  if "$build/test/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=64 -timeout=10 \
+  if "$build/test/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=64 -timeout=25 \
        -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" \
        "$build/corpus/$target" "$build/seeds/$target" > "$log" 2>&1; then
     grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$log" | tr '\n' ' '
