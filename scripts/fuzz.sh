@@ -19,15 +19,19 @@ all_targets="fuzz_pts fuzz_tris fuzz_medit fuzz_tetgen fuzz_scalar_fields_text f
              fuzz_ply_with_fields fuzz_expression_letters fuzz_expression_f fuzz_closed_triangle_mesh"
 targets="${BISO_FUZZ_TARGETS:-$all_targets}"
 
+# Debug: CGAL's assertions on; the harnesses add -O1 themselves.
+mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug -DBISO_BUILD_FUZZERS=ON \
-      -DBISO_BUILD_TESTS=OFF -DBISO_BUILD_EXAMPLES=OFF -DBISO_BUILD_BENCHMARKS=OFF > "$build.configure.log" \
-  || { cat "$build.configure.log"; exit 1; }
+      -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE \
+      -DBISO_BUILD_TESTS=OFF -DBISO_BUILD_EXAMPLES=OFF -DBISO_BUILD_BENCHMARKS=OFF > "$build/configure.log" 2>&1 \
+  || { cat "$build/configure.log"; exit 1; }
 # shellcheck disable=SC2086
 cmake --build "$build" --target $targets -j "$(nproc)"
 
 rm -rf "$build/seeds"
 /usr/bin/env python3 test/fuzz/make_seed_corpus.py "$build/seeds"
 mkdir -p "$build/artifacts"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 failed=""
 start=$(date +%s)
 for target in $targets; do

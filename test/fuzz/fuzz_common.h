@@ -36,6 +36,16 @@ inline std::string write_temporary(const std::uint8_t* data, std::size_t size, c
 {
   static const std::string directory = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
   const std::string path = directory + "/biso_fuzz_" + std::to_string(getpid()) + extension;
+  // Removed at exit (libFuzzer ends with exit(), also on -max_total_time).
+  static std::string last_path;
+  static const bool registered = std::atexit([] {
+    if(!last_path.empty())
+      std::remove(last_path.c_str());
+  }) == 0;
+  (void)registered;
+  if(last_path != path && !last_path.empty())
+    std::remove(last_path.c_str());
+  last_path = path;
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if(f == nullptr)
     std::abort();

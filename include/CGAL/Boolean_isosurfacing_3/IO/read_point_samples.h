@@ -32,11 +32,12 @@ namespace Boolean_isosurfacing {
 namespace IO {
 
 /*!
- * Reads `path` (".pts" or any extension CGAL::IO::read_point_set knows),
+ * Reads `path` (".pts", ".xyz", ".pwn", or any extension CGAL::IO::read_point_set knows),
  * appending to `points` and, when the file has normals, to `normals`.
  * \returns whether the points came with normals.
- * \throws as read_pts() for `.pts`; Invalid_input_error if CGAL cannot read
- *         the file; Empty_input_error if it holds no point.
+ * \throws as read_pts() for `.pts`, `.xyz` and `.pwn`, the message prefixed
+ *         with the file name; Invalid_input_error for a directory or if CGAL
+ *         cannot read the file; Empty_input_error if it holds no point.
  */
 namespace internal {
 
