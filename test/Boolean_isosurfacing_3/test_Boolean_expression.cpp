@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <iterator>
@@ -773,3 +774,64 @@ TEST(Boolean_expression_partial, derivative_and_support)
 }
 
 } // namespace
+
+// ---------------------------------------------------------------------------
+// Parsing cost (issue 12): a 4 KB product at the term limit whose further
+// operands are redundant used to cost one absorption of the whole product per
+// operand, 3 to 14 s in all; now each redundant operand is one linear pass.
+
+namespace {
+double seconds_to_parse(const std::string& text, std::size_t& terms)
+{
+  const auto start = std::chrono::steady_clock::now();
+  terms = parse(text).number_of_terms();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+} // namespace
+
+TEST(Boolean_expression_cost, redundant_operands_of_a_product_at_the_limit)
+{
+  const std::vector<std::string> operands = {" & (A | B)", " & (A | B | C)", " & (A | C | E | G | I | K | M | O | Q | S | U | W)",
+                                             " | A & C & E"};
+  for(const std::string& operand : operands)
+  {
+    std::string text = pairs_product(12);
+    while(text.size() < 4000)
+      text += operand;
+    SCOPED_TRACE(operand);
+    std::size_t terms = 0;
+    const double seconds = seconds_to_parse(text, terms);
+    EXPECT_LT(seconds, 1.0) << text.size() << " bytes";
+    EXPECT_GE(terms, 3585u);
+    EXPECT_LE(terms, 4096u);
+  }
+  // The product repeated: every operand is the product itself.
+  std::string text = "(" + pairs_product(12) + ")";
+  const std::string factor = text;
+  while(text.size() < 4000)
+    text += " & " + factor;
+  std::size_t terms = 0;
+  EXPECT_LT(seconds_to_parse(text, terms), 1.0);
+  EXPECT_EQ(terms, 4096u);
+  EXPECT_EQ(parse(text), parse(pairs_product(12)));
+}
+
+TEST(Boolean_expression_cost, the_work_limit_is_an_error_not_a_hang)
+{
+  // Operands that each need a real absorption of a 2048-term product.
+  std::string text = pairs_product(11);
+  for(int i = 0; text.size() < 60000; ++i)
+    text += std::string(" & (Y | ") + char('A' + 2 * (i % 11)) + ")";
+  const auto start = std::chrono::steady_clock::now();
+  try
+  {
+    const std::size_t terms = parse(text).number_of_terms();
+    EXPECT_EQ(terms, 2048u);
+  }
+  catch(const Invalid_input_error& e)
+  {
+    EXPECT_TRUE(contains(e.what(), "term comparisons (the limit of Boolean_expression)")) << e.what();
+  }
+  // Generous (a shared, loaded machine): the point is no hang.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3.0);
+}

@@ -152,26 +152,64 @@ inline void sort_canonically(std::vector<Boolean_term>& terms)
   std::sort(terms.begin(), terms.end(), canonical_less);
 }
 
+// Bounds the total work of absorption (pairs of terms compared) in one
+// parse: each step is already bounded (candidates x kept terms), but a long
+// text can chain thousands of steps.  2^27 comparisons take about half a
+// second; the 4 KB products at the term limit of the tests need 0.5 to 26
+// million.
+constexpr std::size_t max_absorption_work = std::size_t(1) << 27;
+
+struct Absorption_budget
+{
+  std::size_t spent = 0;
+  bool exhausted = false;
+
+  // Charges `work` comparisons; false (and exhausted) beyond the budget.
+  bool charge(std::size_t work)
+  {
+    spent += work;
+    if(spent > max_absorption_work)
+      exhausted = true;
+    return !exhausted;
+  }
+};
+
+inline bool literal_count_less(const Boolean_term& a, const Boolean_term& b)
+{
+  const int ca = popcount64(a.literals()), cb = popcount64(b.literals());
+  if(ca != cb)
+    return ca < cb;
+  return a.pos != b.pos ? a.pos < b.pos : a.neg < b.neg;
+}
+
 // Removes contradictory, duplicate and absorbed terms.  Returns false (terms
-// then unspecified) as soon as more than `limit` terms survive.
+// then unspecified) as soon as more than `limit` terms survive, or when the
+// budget is exhausted.
 // Sorting by literal count first means a term can only be absorbed by a term
-// that is already kept, so one pass suffices.
+// that is already kept and has fewer literals (duplicates are gone), so one
+// pass over that prefix of the kept terms suffices.
 inline bool absorb(std::vector<Boolean_term>& terms,
-                   std::size_t limit = std::numeric_limits<std::size_t>::max())
+                   std::size_t limit = std::numeric_limits<std::size_t>::max(),
+                   Absorption_budget* budget = nullptr)
 {
   terms.erase(std::remove_if(terms.begin(), terms.end(), is_contradictory), terms.end());
-  std::sort(terms.begin(), terms.end(), [](const Boolean_term& a, const Boolean_term& b) {
-    const int ca = popcount64(a.literals()), cb = popcount64(b.literals());
-    if(ca != cb)
-      return ca < cb;
-    return a.pos != b.pos ? a.pos < b.pos : a.neg < b.neg;
-  });
+  std::sort(terms.begin(), terms.end(), literal_count_less);
   terms.erase(std::unique(terms.begin(), terms.end()), terms.end());
   std::size_t kept = 0;
+  std::size_t fewer = 0; // kept terms with fewer literals than terms[i]
+  int fewer_count = -1;  // their literal count bound
   for(std::size_t i = 0; i < terms.size(); ++i)
   {
+    const int count = popcount64(terms[i].literals());
+    if(count != fewer_count)
+    {
+      fewer = kept;
+      fewer_count = count;
+    }
+    if(budget != nullptr && !budget->charge(fewer))
+      return false;
     bool absorbed = false;
-    for(std::size_t j = 0; j < kept && !absorbed; ++j)
+    for(std::size_t j = 0; j < fewer && !absorbed; ++j)
       absorbed = absorbs(terms[j], terms[i]);
     if(absorbed)
       continue;
@@ -183,32 +221,107 @@ inline bool absorb(std::vector<Boolean_term>& terms,
   return true;
 }
 
-// DNF of (a & b): all pairwise conjunctions.  Both inputs absorbed.
+// Whether some term of `sorted` (sorted by literal_count_less) absorbs `t`;
+// adds the comparisons made to `work`.
+inline bool is_absorbed_by_any(const Boolean_term& t, const std::vector<Boolean_term>& sorted, std::size_t& work)
+{
+  // The frequent redundant case, t itself in the set, by binary search first.
+  if(std::binary_search(sorted.begin(), sorted.end(), t, literal_count_less))
+    return true;
+  const int count = popcount64(t.literals());
+  for(const Boolean_term& g : sorted)
+  {
+    if(popcount64(g.literals()) >= count)
+      break; // only fewer literals can absorb a different term
+    ++work;
+    if(absorbs(g, t))
+      return true;
+  }
+  return false;
+}
+
+// DNF of (a & b): the pairwise conjunctions.  Both inputs absorbed (no
+// contradictory, duplicate or absorbed term).
+// A term x of a that is absorbed by a term y of b gives x & y = x, which
+// absorbs every other x & y': it is kept alone, without multiplying it out.
+// Such a term is never absorbed by another candidate (that would take
+// x' <= x for another term x' of a), so only the products need absorbing.
+// This makes a redundant operand ("... & (A | B)" where every term already
+// has A or B) one linear pass instead of an absorption of the whole product.
 inline bool dnf_and(const std::vector<Boolean_term>& a, const std::vector<Boolean_term>& b,
-                    std::vector<Boolean_term>& result)
+                    std::vector<Boolean_term>& result, Absorption_budget* budget = nullptr)
 {
   result.clear();
   if(a.empty() || b.empty())
     return true;
-  if(a.size() > max_dnf_candidates / b.size())
-    return false;
-  result.reserve(a.size() * b.size());
+  std::vector<Boolean_term> sorted_b = b;
+  std::sort(sorted_b.begin(), sorted_b.end(), literal_count_less);
+  std::vector<Boolean_term> products;
   for(const Boolean_term& x : a)
+  {
+    std::size_t work = 1;
+    const bool implied = is_absorbed_by_any(x, sorted_b, work);
+    if(budget != nullptr && !budget->charge(work))
+      return false;
+    if(implied)
+    {
+      result.push_back(x);
+      continue;
+    }
+    if(products.size() + b.size() > max_dnf_candidates)
+      return false;
     for(const Boolean_term& y : b)
     {
       const Boolean_term t{x.pos | y.pos, x.neg | y.neg};
       if(!is_contradictory(t))
-        result.push_back(t);
+        products.push_back(t);
     }
-  return absorb(result, max_dnf_terms);
+  }
+  if(products.empty())
+    return result.size() <= max_dnf_terms;
+  if(!absorb(products, max_dnf_terms, budget))
+    return false;
+  // Then the products absorbed by a term kept alone.
+  std::sort(result.begin(), result.end(), literal_count_less);
+  if(budget != nullptr && !budget->charge(products.size() * result.size()))
+    return false;
+  const std::size_t alone = result.size();
+  for(const Boolean_term& t : products)
+  {
+    bool absorbed = false;
+    const int count = popcount64(t.literals());
+    for(std::size_t j = 0; j < alone && !absorbed; ++j)
+    {
+      if(popcount64(result[j].literals()) >= count)
+        break;
+      absorbed = absorbs(result[j], t);
+    }
+    if(!absorbed)
+      result.push_back(t);
+  }
+  return result.size() <= max_dnf_terms;
 }
 
+// DNF of (a | b), both absorbed: a term can only be absorbed by a term of
+// the other operand, so this is O(|a| |b|), not an absorption of the union.
 inline bool dnf_or(const std::vector<Boolean_term>& a, const std::vector<Boolean_term>& b,
-                   std::vector<Boolean_term>& result)
+                   std::vector<Boolean_term>& result, Absorption_budget* budget = nullptr)
 {
-  result = a;
-  result.insert(result.end(), b.begin(), b.end());
-  return absorb(result, max_dnf_terms);
+  // Plain scans, no sorting: usually one operand is the long accumulated
+  // sum and the other a few terms.
+  if(budget != nullptr && !budget->charge(2 * a.size() * b.size()))
+    return false;
+  std::vector<Boolean_term> b_kept; // the terms of b no term of a absorbs (or equals)
+  for(const Boolean_term& y : b)
+    if(std::none_of(a.begin(), a.end(), [&](const Boolean_term& x) { return absorbs(x, y); }))
+      b_kept.push_back(y);
+  result.clear();
+  for(const Boolean_term& x : a)
+    // absorbs(y, x) with y kept means y != x (equal terms were dropped from b)
+    if(std::none_of(b_kept.begin(), b_kept.end(), [&](const Boolean_term& y) { return absorbs(y, x); }))
+      result.push_back(x);
+  result.insert(result.end(), b_kept.begin(), b_kept.end());
+  return result.size() <= max_dnf_terms;
 }
 
 // DNF of !a by De Morgan: !(t1 | ... | tm) = AND_j (OR of the negated
@@ -243,9 +356,9 @@ inline bool dnf_not(const std::vector<Boolean_term>& a, std::vector<Boolean_term
 // consensus on that variable (x.P | !x.Q -> P.Q when P.Q is consistent),
 // then absorb.  A consensus on x contains neither x nor !x, so one sweep per
 // variable suffices (Tison 1967; Brown, "Boolean Reasoning", 1990, 3.9).
-inline bool blake_canonical_form(std::vector<Boolean_term>& terms)
+inline bool blake_canonical_form(std::vector<Boolean_term>& terms, Absorption_budget* budget = nullptr)
 {
-  if(!absorb(terms, max_dnf_terms))
+  if(!absorb(terms, max_dnf_terms, budget))
     return false;
   std::uint64_t both = 0, seen_pos = 0, seen_neg = 0;
   for(const Boolean_term& t : terms)
@@ -280,7 +393,7 @@ inline bool blake_canonical_form(std::vector<Boolean_term>& terms)
         if(!is_contradictory(c)) // opposed on a second variable: no consensus
           terms.push_back(c);
       }
-    if(terms.size() != old_size && !absorb(terms, max_dnf_terms))
+    if(terms.size() != old_size && !absorb(terms, max_dnf_terms, budget))
       return false;
   }
   sort_canonically(terms);
@@ -360,10 +473,14 @@ public:
 
     Parsed_expression result;
     result.terms = to_dnf(root, false, 0);
-    if(!blake_canonical_form(result.terms))
+    if(!blake_canonical_form(result.terms, &m_budget))
+    {
+      if(m_budget.exhausted)
+        too_much_work();
       throw Invalid_input_error("Boolean expression " + quote_for_message(m_text) +
                                 " has more than " + std::to_string(max_dnf_terms) +
                                 " prime implicants (the limit of Boolean_expression); simplify it");
+    }
     if(m_names != nullptr)
     {
       result.number_of_variables = m_names->size();
@@ -656,6 +773,14 @@ private:
     return index;
   }
 
+  [[noreturn]] void too_much_work() const
+  {
+    throw Invalid_input_error("Boolean expression too complex: converting " + quote_for_message(m_text) +
+                              " to disjunctive normal form takes more than " +
+                              std::to_string(max_absorption_work) +
+                              " term comparisons (the limit of Boolean_expression); factor it or shorten it");
+  }
+
   [[noreturn]] void too_many_terms(std::size_t node) const
   {
     throw Invalid_input_error(
@@ -694,8 +819,10 @@ private:
       for(std::size_t child : n.children)
       {
         const std::vector<Boolean_term> operand = to_dnf(child, negated, depth + 1);
-        const bool ok = product ? dnf_and(result, operand, combined)
-                                : dnf_or(result, operand, combined);
+        const bool ok = product ? dnf_and(result, operand, combined, &m_budget)
+                                : dnf_or(result, operand, combined, &m_budget);
+        if(!ok && m_budget.exhausted)
+          too_much_work();
         if(!ok)
           too_many_terms(node);
         result.swap(combined);
@@ -713,6 +840,7 @@ private:
   std::vector<Token> m_tokens;
   std::size_t m_next = 0;
   std::vector<Node> m_nodes;
+  mutable Absorption_budget m_budget; // shared by every step of the conversion
   bool m_have_identifier = false; // the first one fixes the automatic naming convention
   std::string m_first_word;
   std::size_t m_first_position = 0;

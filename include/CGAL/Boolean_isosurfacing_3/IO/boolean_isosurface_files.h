@@ -50,7 +50,9 @@
 #include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Byte_order.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Input_excerpt.h>
 
+#include <CGAL/double.h> // CGAL::to_double(double)
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -280,7 +282,7 @@ public:
       double v = 0;
       const std::from_chars_result r = std::from_chars(first, last, v);
       if(r.ec != std::errc() || r.ptr != last)
-        fail("'" + t + "' is not a number");
+        fail("'" + CGAL::Boolean_isosurfacing::internal::input_excerpt(t) + "' is not a number");
       return v;
     }
     char b[8];
@@ -311,6 +313,8 @@ public:
            std::to_string(hi) + "]");
     return static_cast<long long>(v);
   }
+
+  std::size_t line_number() const { return m_line_number; }
 
   [[noreturn]] void fail(const std::string& what) const
   {
@@ -454,6 +458,7 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
     while(split >> w)
       words.push_back(w);
   };
+  auto excerpt = [](const std::string& text) { return CGAL::Boolean_isosurfacing::internal::input_excerpt(text); };
   std::vector<std::string> words;
   next_header_line(words);
   if(words.size() != 1 || words[0] != "ply")
@@ -470,8 +475,12 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
       break;
     if(words[0] == "format")
     {
+      if(have_format)
+        throw header_error("a second 'format' line");
       if(words.size() != 3)
         throw header_error("expected 'format <ascii|binary_little_endian|binary_big_endian> 1.0'");
+      if(words[2] != "1.0")
+        throw header_error("unsupported PLY version '" + excerpt(words[2]) + "' (only 1.0 is read)");
       if(words[1] == "ascii")
         format = Ply_format::ASCII;
       else if(words[1] == "binary_little_endian")
@@ -479,7 +488,7 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
       else if(words[1] == "binary_big_endian")
         format = Ply_format::BINARY_BIG_ENDIAN;
       else
-        throw header_error("unknown PLY format '" + words[1] + "'");
+        throw header_error("unknown PLY format '" + excerpt(words[1]) + "'");
       have_format = true;
     }
     else if(words[0] == "element")
@@ -487,8 +496,17 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
       Ply_element e;
       unsigned long long count = 0;
       const char* last = words.size() == 3 ? words[2].data() + words[2].size() : nullptr;
-      if(words.size() != 3 || std::from_chars(words[2].data(), last, count).ptr != last)
+      if(words.size() != 3)
         throw header_error("expected 'element <name> <count>'");
+      const std::from_chars_result r = std::from_chars(words[2].data(), last, count);
+      if(r.ec == std::errc::result_out_of_range || count > (std::numeric_limits<std::size_t>::max)())
+        throw header_error("the count of element '" + excerpt(words[1]) + "' is out of range: " + excerpt(words[2]));
+      if(r.ec != std::errc() || r.ptr != last)
+        throw header_error("expected 'element <name> <count>', the count '" + excerpt(words[2]) +
+                           "' is not a non-negative integer");
+      for(const Ply_element& other : elements)
+        if(other.name == words[1])
+          throw header_error("a second element '" + excerpt(words[1]) + "'");
       e.name = words[1];
       e.count = std::size_t(count);
       elements.push_back(e);
@@ -511,11 +529,12 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
         p.name = words.size() == 3 ? words[2] : std::string();
       }
       if(!ok)
-        throw header_error("expected 'property <type> <name>' or 'property list <type> <type> <name>': '" + line + "'");
+        throw header_error("expected 'property <type> <name>' or 'property list <type> <type> <name>': '" +
+                           excerpt(line) + "'");
       elements.back().properties.push_back(p);
     }
     else
-      throw header_error("unknown PLY header line '" + line + "'");
+      throw header_error("unknown PLY header line '" + excerpt(line) + "'");
   }
   if(!have_format)
     throw header_error("no 'format' line in the PLY header");
@@ -546,6 +565,32 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
   const std::size_t pindices = find(*face, {"vertex_indices", "vertex_index"}, true);
   const std::size_t pfield = find(*face, {"field"}, false);
 
+  // Every record takes some bytes: at least the sizes of its scalars and list
+  // counts in binary, two characters (a digit and a blank) per property in
+  // ASCII.  So the counts of the header, which nothing bounds, are checked
+  // against the bytes that follow it before anything is reserved or looped
+  // over: a record of no byte at all (no property) is an error, since its
+  // count could be anything.
+  const std::size_t remaining = CGAL::Boolean_isosurfacing::internal::remaining_bytes(in);
+  std::size_t needed = 0;
+  for(const Ply_element& e : elements)
+  {
+    std::size_t record = 0;
+    for(const Ply_property& p : e.properties)
+      record += format == Ply_format::ASCII ? 2 : ply_type_size(p.is_list ? p.count_type : p.type);
+    if(e.count == 0)
+      continue;
+    if(record == 0)
+      throw Invalid_input_error("'" + name + "': the PLY element '" + excerpt(e.name) + "' has " +
+                                std::to_string(e.count) + " records but no property");
+    if(remaining != CGAL::Boolean_isosurfacing::internal::unknown_remaining_bytes &&
+       (e.count > remaining / record || needed + e.count * record > remaining + 1)) // ASCII: last newline optional
+      throw Invalid_input_error("'" + name + "': the PLY header announces " + std::to_string(e.count) + " '" +
+                                excerpt(e.name) + "' records of at least " + std::to_string(record) +
+                                " bytes, but only " + std::to_string(remaining) + " bytes follow the header");
+    needed += e.count * record;
+  }
+
   // Body.
   Ply_value_reader reader(in, format, name, line_number);
   const long long max_index = (std::numeric_limits<std::int32_t>::max)();
@@ -553,7 +598,7 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
   {
     const bool is_vertex = &e == vertex, is_face = &e == face;
     if(is_vertex)
-      soup.points.reserve((std::min)(e.count, std::size_t(1) << 22));
+      soup.points.reserve(CGAL::Boolean_isosurfacing::internal::reservable(e.count, 1, remaining));
     for(std::size_t r = 0; r < e.count; ++r)
     {
       reader.begin_record(e.name.c_str(), r);
@@ -597,6 +642,27 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
         soup.face_fields.push_back(field);
       }
     }
+  }
+  // Nothing may follow the last element (blank lines in ASCII).
+  if(format == Ply_format::ASCII)
+  {
+    std::size_t at = reader.line_number();
+    while(std::getline(in, line))
+    {
+      ++at;
+      if(line.find_first_not_of(" \t\r\f\v") != std::string::npos)
+        throw Parse_error("'" + name + "' line " + std::to_string(at) + ": text after the last element: '" +
+                            excerpt(line) + "'",
+                          at);
+    }
+  }
+  else if(in.peek() != std::char_traits<char>::eof())
+  {
+    std::size_t extra = 0;
+    while(in.get() != std::char_traits<char>::eof() && extra < 1000000)
+      ++extra;
+    throw Invalid_input_error("'" + name + "': " + (extra >= 1000000 ? std::string("more than 1000000") : std::to_string(extra)) +
+                              " trailing bytes after the last element of the binary PLY body");
   }
   for(std::size_t f = 0; f < soup.polygons.size(); ++f)
     for(std::size_t v : soup.polygons[f])

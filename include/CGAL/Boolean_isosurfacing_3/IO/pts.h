@@ -22,6 +22,7 @@
 // std::from_chars: independent of the locale.
 
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Input_excerpt.h>
 
 #include <array>
 #include <charconv>
@@ -30,6 +31,7 @@
 #include <fstream>
 #include <istream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -69,14 +71,22 @@ inline double parse_number(const std::pair<const char*, const char*>& token, std
     ++first; // from_chars does not accept a leading '+'
   const std::from_chars_result result = std::from_chars(first, token.second, value);
   if(result.ec != std::errc() || result.ptr != token.second)
-    throw Parse_error("line " + std::to_string(line_number) + ": '" + std::string(token.first, token.second) +
+    throw Parse_error("line " + std::to_string(line_number) + ": '" +
+                        CGAL::Boolean_isosurfacing::internal::input_excerpt(std::string_view(token.first, std::size_t(token.second - token.first))) +
                         "' is not a number",
                       line_number);
   if(!std::isfinite(value))
     throw Non_finite_value_error("line " + std::to_string(line_number) + ": non-finite value '" +
-                                 std::string(token.first, token.second) + "'");
+                                 CGAL::Boolean_isosurfacing::internal::input_excerpt(std::string_view(token.first, std::size_t(token.second - token.first))) +
+                                 "'");
   return value;
 }
+
+enum class Point_file_format
+{
+  PTS, // the format above
+  XYZ  // CGAL's .xyz / .pwn: `x y z` or `x y z nx ny nz`, and an optional point count alone on the first line
+};
 
 } // namespace internal
 
@@ -89,8 +99,11 @@ inline double parse_number(const std::pair<const char*, const char*>& token, std
  *         Empty_input_error (no point at all).
  */
 template <typename Point_3, typename Vector_3>
-bool read_pts(std::istream& in, std::vector<Point_3>& points, std::vector<Vector_3>& normals)
+bool read_pts(std::istream& in, std::vector<Point_3>& points, std::vector<Vector_3>& normals,
+              internal::Point_file_format format = internal::Point_file_format::PTS)
 {
+  const bool xyz = format == internal::Point_file_format::XYZ;
+  bool first_meaningful_line = true;
   std::string line;
   std::size_t line_number = 0;
   std::size_t read = 0, with_normal = 0;
@@ -107,11 +120,23 @@ bool read_pts(std::istream& in, std::vector<Point_3>& points, std::vector<Vector
     const std::size_t n = internal::split_tokens(line, tokens);
     if(n == 0 || *tokens[0].first == '#')
       continue;
+    if(xyz && first_meaningful_line && n == 1)
+    {
+      first_meaningful_line = false;
+      std::size_t count = 0;
+      const std::from_chars_result r = std::from_chars(tokens[0].first, tokens[0].second, count);
+      if(r.ec != std::errc() || r.ptr != tokens[0].second)
+        throw Parse_error("line " + std::to_string(line_number) + ": expected the number of points or 'x y z', found '" +
+                            CGAL::Boolean_isosurfacing::internal::input_excerpt(line) + "'",
+                          line_number);
+      continue; // the optional point count of .xyz files: not needed
+    }
+    first_meaningful_line = false;
     const char head = *tokens[0].first;
-    const bool keyword = (tokens[0].second - tokens[0].first == 1) &&
+    const bool keyword = !xyz && (tokens[0].second - tokens[0].first == 1) &&
                          (head == 'p' || head == 'n' || head == 'd' || head == 's' || head == 'g' || head == 'c');
     auto bad = [&](const std::string& why) {
-      return Parse_error("line " + std::to_string(line_number) + ": " + why + ": '" + line + "'", line_number);
+      return Parse_error("line " + std::to_string(line_number) + ": " + why + ": '" + CGAL::Boolean_isosurfacing::internal::input_excerpt(line) + "'", line_number);
     };
     if(keyword)
     {

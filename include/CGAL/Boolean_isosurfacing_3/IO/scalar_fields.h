@@ -44,6 +44,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Scalar_fields.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Byte_order.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Input_excerpt.h>
 
 #include <algorithm>
 #include <cctype>
@@ -336,12 +337,8 @@ inline Scalar_fields read_text_scalar_fields(std::istream& in, const std::string
   std::vector<double> values;
   std::vector<std::string_view> tokens;
   auto fail = [&](const std::string& what) {
-    std::string quoted = line;
-    if(!quoted.empty() && quoted.back() == '\r')
-      quoted.pop_back();
-    if(quoted.size() > 80)
-      quoted = quoted.substr(0, 77) + "...";
-    throw Parse_error("'" + name + "' line " + std::to_string(line_number) + ": " + what + ": '" + quoted + "'",
+    throw Parse_error("'" + name + "' line " + std::to_string(line_number) + ": " + what + ": '" +
+                        CGAL::Boolean_isosurfacing::internal::input_excerpt(line, 77) + "'",
                       line_number);
   };
   auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
@@ -386,11 +383,11 @@ inline Scalar_fields read_text_scalar_fields(std::istream& in, const std::string
       if(r.ec == std::errc::result_out_of_range && r.ptr == last)
         value = std::numeric_limits<double>::infinity(); // reported as non-finite below
       else if(r.ec != std::errc() || r.ptr != last)
-        fail("'" + std::string(tokens[i]) + "' is not a number");
+        fail("'" + CGAL::Boolean_isosurfacing::internal::input_excerpt(tokens[i]) + "' is not a number");
       if(!std::isfinite(value))
         throw Non_finite_value_error("'" + name + "' line " + std::to_string(line_number) + ": vertex " +
                                      std::to_string(values.size() / N) + ", field " + std::to_string(i) +
-                                     ": non-finite value '" + std::string(tokens[i]) + "'");
+                                     ": non-finite value '" + CGAL::Boolean_isosurfacing::internal::input_excerpt(tokens[i]) + "'");
       values.push_back(value);
     }
   }

@@ -52,6 +52,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Byte_order.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Input_excerpt.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
@@ -109,6 +110,23 @@ public:
   std::size_t line_number() const { return m_line_number; }
   const std::string& name() const { return m_name; }
 
+  // Bytes left after the current line (unknown_remaining_bytes if the stream cannot seek).
+  std::size_t remaining_bytes() const { return CGAL::Boolean_isosurfacing::internal::remaining_bytes(m_in); }
+
+  // A header announcing `count` records of at least `min_bytes` bytes each
+  // (one line each) must fit in what is left of the file: checked before
+  // anything is reserved, so that a wrong count is an error naming it, not
+  // gigabytes of memory.  Returns how many records may be reserved.
+  std::size_t check_count(std::size_t count, std::size_t min_bytes, const std::string& what) const
+  {
+    const std::size_t remaining = remaining_bytes();
+    if(remaining != CGAL::Boolean_isosurfacing::internal::unknown_remaining_bytes && count != 0 &&
+       count - 1 > remaining / min_bytes) // the last line may lack its newline
+      fail("the header announces " + std::to_string(count) + " " + what + " of at least " +
+           std::to_string(min_bytes) + " bytes each, but only " + std::to_string(remaining) + " bytes follow");
+    return CGAL::Boolean_isosurfacing::internal::reservable(count, min_bytes, remaining);
+  }
+
   [[noreturn]] void fail(const std::string& what) const
   {
     throw Parse_error("'" + m_name + "' line " + std::to_string(m_line_number) + ": " + what, m_line_number);
@@ -117,12 +135,7 @@ public:
   // Fails, quoting the offending line.
   [[noreturn]] void fail_quoting(const std::string& what) const
   {
-    std::string quoted = m_line;
-    if(!quoted.empty() && quoted.back() == '\r')
-      quoted.pop_back();
-    if(quoted.size() > 80)
-      quoted = quoted.substr(0, 77) + "...";
-    fail(what + ": '" + quoted + "'");
+    fail(what + ": '" + CGAL::Boolean_isosurfacing::internal::input_excerpt(m_line, 77) + "'");
   }
 
   double number(std::size_t i) const
@@ -135,9 +148,9 @@ public:
     double value = 0;
     const std::from_chars_result r = std::from_chars(first, last, value);
     if(r.ec == std::errc::result_out_of_range)
-      fail("'" + std::string(t) + "' is out of the range of a double");
+      fail("'" + CGAL::Boolean_isosurfacing::internal::input_excerpt(t) + "' is out of the range of a double");
     if(r.ec != std::errc() || r.ptr != last)
-      fail_quoting("'" + std::string(t) + "' is not a number");
+      fail_quoting("'" + CGAL::Boolean_isosurfacing::internal::input_excerpt(t) + "' is not a number");
     return value;
   }
 
@@ -147,7 +160,7 @@ public:
     const double value = number(i);
     if(!std::isfinite(value))
       throw Non_finite_value_error("'" + m_name + "' line " + std::to_string(m_line_number) +
-                                   ": non-finite coordinate '" + std::string(m_tokens[i]) + "'");
+                                   ": non-finite coordinate '" + CGAL::Boolean_isosurfacing::internal::input_excerpt(m_tokens[i]) + "'");
     return value;
   }
 
@@ -162,7 +175,7 @@ public:
     unsigned long long value = 0;
     const std::from_chars_result r = std::from_chars(first, last, value);
     if(r.ec != std::errc() || r.ptr != last || value > (std::numeric_limits<std::size_t>::max)())
-      fail_quoting("'" + std::string(t) + "' is not a non-negative integer");
+      fail_quoting("'" + CGAL::Boolean_isosurfacing::internal::input_excerpt(t) + "' is not a non-negative integer");
     return std::size_t(value);
   }
 
@@ -177,7 +190,7 @@ public:
     long long value = 0;
     const std::from_chars_result r = std::from_chars(first, last, value);
     if(r.ec != std::errc() || r.ptr != last)
-      fail_quoting("'" + std::string(t) + "' is not an integer");
+      fail_quoting("'" + CGAL::Boolean_isosurfacing::internal::input_excerpt(t) + "' is not an integer");
     return value;
   }
 
@@ -265,10 +278,6 @@ inline void next_record(Line_reader& r, const char* element, const char* element
                    std::to_string(r.size()) + " fields");
 }
 
-// Reserve at most this many elements up front: a wrong header must not
-// allocate gigabytes before the file proves it has the records.
-constexpr std::size_t max_reserve = std::size_t(1) << 22;
-
 // TetGen numbers its records from 0 or 1 (the first record decides, and sets
 // `base`), consecutively.
 inline void check_record_number(Line_reader& r, const char* what, std::size_t k, std::size_t& base)
@@ -343,7 +352,7 @@ Tetrahedral_mesh_3<GeomTraits> read_MEDIT(std::istream& in, const std::string& n
         r.fail("a second Vertices block");
       have_vertices = true;
       const std::size_t n = medit_value(r, "Vertices");
-      points.reserve((std::min)(n, max_reserve));
+      points.reserve(r.check_count(n, 8, "vertices")); // "x y z r\n"
       for(std::size_t k = 0; k < n; ++k)
       {
         next_record(r, "vertex", "vertices", k, n, 4, "x y z ref");
@@ -358,7 +367,7 @@ Tetrahedral_mesh_3<GeomTraits> read_MEDIT(std::istream& in, const std::string& n
         r.fail("a second Tetrahedra block");
       have_tetrahedra = true;
       const std::size_t m = medit_value(r, "Tetrahedra");
-      tetrahedra.reserve((std::min)(m, max_reserve));
+      tetrahedra.reserve(r.check_count(m, 10, "tetrahedra")); // "a b c d r\n"
       for(std::size_t k = 0; k < m; ++k)
       {
         next_record(r, "tetrahedron", "tetrahedra", k, m, 5, "a b c d ref");
@@ -384,8 +393,9 @@ Tetrahedral_mesh_3<GeomTraits> read_MEDIT(std::istream& in, const std::string& n
     else
     {
       // Another block (Triangles, Edges, Corners, ...): its records are skipped.
-      const std::string block(r[0]);
+      const std::string block = CGAL::Boolean_isosurfacing::internal::input_excerpt(r[0]);
       const std::size_t n = medit_value(r, block);
+      r.check_count(n, 2, "records of the " + block + " block");
       for(std::size_t k = 0; k < n; ++k)
         if(!r.next())
           r.fail("the file ends after " + std::to_string(k) + " of the " + std::to_string(n) + " records of the " +
@@ -457,7 +467,7 @@ Tetrahedral_mesh_3<GeomTraits> read_TetGen(std::istream& node, std::istream& ele
   if(nattr > 1024)
     r.fail("implausible number of attributes " + std::to_string(nattr));
   std::vector<Point_3> points;
-  points.reserve((std::min)(n, max_reserve));
+  points.reserve(r.check_count(n, 2 * (4 + nattr + nbm), "vertices"));
   std::size_t base = 0;
   for(std::size_t k = 0; k < n; ++k)
   {
@@ -488,7 +498,7 @@ Tetrahedral_mesh_3<GeomTraits> read_TetGen(std::istream& node, std::istream& ele
   if(eattr > 1024)
     e.fail("implausible number of attributes " + std::to_string(eattr));
   std::vector<Tetrahedron> tetrahedra;
-  tetrahedra.reserve((std::min)(m, max_reserve));
+  tetrahedra.reserve(e.check_count(m, 2 * (1 + npt + eattr), "tetrahedra"));
   std::size_t element_base = 0;
   for(std::size_t k = 0; k < m; ++k)
   {

@@ -20,6 +20,7 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/pts.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 
+#include <CGAL/double.h> // CGAL::to_double(double)
 #include <CGAL/number_utils.h>
 
 #include <array>
