@@ -14,3 +14,6 @@ cd build
 ctest -j "$jobs" --output-on-failure --timeout 1500
 cd ..
 bash scripts/sanitize.sh
+# Each reader and parser under libFuzzer, briefly: a regression in any of them
+# fails CI (longer runs: scripts/fuzz.sh SECONDS; see doc/.../fuzzing.md).
+bash scripts/fuzz.sh 20
