@@ -55,6 +55,32 @@ double volume(const Soup& s)
   return v;
 }
 
+// No polygon has two vertices at the same position, or zero area: its
+// vertices are not all collinear (exact predicate on the doubles) and its
+// area vector, computed in double, is not zero.
+::testing::AssertionResult has_no_degenerate_polygon(const Soup& s)
+{
+  for(std::size_t p = 0; p < s.polygons.size(); ++p)
+  {
+    const auto& poly = s.polygons[p];
+    std::set<Point> positions;
+    for(std::size_t v : poly)
+      positions.insert(s.points[v]);
+    if(positions.size() != poly.size())
+      return ::testing::AssertionFailure() << "polygon " << p << " has two vertices at " << s.points[poly[0]]
+                                           << " (or nearby) at the same position";
+    bool collinear = true;
+    for(std::size_t k = 2; k < poly.size() && collinear; ++k)
+      collinear = CGAL::collinear(s.points[poly[0]], s.points[poly[1]], s.points[poly[k]]);
+    K::Vector_3 area(0, 0, 0);
+    for(std::size_t k = 1; k + 1 < poly.size(); ++k)
+      area = area + CGAL::cross_product(s.points[poly[k]] - s.points[poly[0]], s.points[poly[k + 1]] - s.points[poly[0]]);
+    if(collinear || area.squared_length() == 0)
+      return ::testing::AssertionFailure() << "polygon " << p << " at " << s.points[poly[0]] << " has zero area";
+  }
+  return ::testing::AssertionSuccess();
+}
+
 // Every directed edge once and its reverse once: closed, consistently
 // oriented, no edge with more than two faces.
 ::testing::AssertionResult is_closed_oriented_manifold(const Soup& s)
@@ -81,6 +107,9 @@ double volume(const Soup& s)
       return ::testing::AssertionFailure() << "edge (" << e.first.first << "," << e.first.second << ") at "
                                            << s.points[e.first.first] << " is on the border";
   }
+  const ::testing::AssertionResult nondegenerate = has_no_degenerate_polygon(s);
+  if(!nondegenerate)
+    return nondegenerate;
   // Welded: no two points equal.
   std::vector<Point> p = s.points;
   std::sort(p.begin(), p.end());
@@ -604,4 +633,56 @@ TEST(BooleanIsosurface, SevenFieldsCubeMinusBall)
       EXPECT_TRUE(s.face_fields[p] >= 0 && s.face_fields[p] <= 6);
   }
   EXPECT_LT(previous, 2e-3);
+}
+
+// The tbiso demo: four spheres centred on the vertices of a regular
+// tetrahedron, "inside at least two".  The spheres are mirrored onto each
+// other by coordinate swaps, and |p - c|^2 summed in another order makes
+// their sampled values differ by a few ulps where they should be equal; the
+// exact arrangement then has cells of size 1e-16, whose polygons are
+// degenerate once rounded to double (48 with two vertices at one position, 6
+// more collinear ones on this set-up before the cleanup of weld_chunk()).
+TEST(BooleanIsosurface, DemoHasNoDegeneratePolygons)
+{
+  const double a = 0.45 / std::sqrt(3.0), r = 0.62;
+  const Grid grid = unit_grid(128);
+  const BI::Scalar_fields fields = BI::sample_fields(
+      grid, std::vector<Field>{sphere(a, a, a, r), sphere(a, -a, -a, r), sphere(-a, a, -a, r), sphere(-a, -a, a, r)});
+  const BI::Boolean_expression e = BI::Boolean_expression::parse("f0&f1 | f0&f2 | f0&f3 | f1&f2 | f1&f3 | f2&f3");
+  for(bool close : {false, true})
+  {
+    // The polygons as the exact evaluation emits them, before welding.
+    BI::internal::Tbiso_chunk raw;
+    BI::internal::extract_grid_slab(grid, fields.data().data(), 0, 4, BI::internal::Tbiso_tetrahedron_evaluator(e, close),
+                                    0, 127, raw);
+    std::size_t raw_degenerate = 0;
+    double raw_volume = 0;
+    for(std::size_t p = 0; p + 1 < raw.polygon_begin.size(); ++p)
+    {
+      std::set<std::array<double, 3>> positions;
+      const std::array<double, 3>& o = raw.points[raw.polygon_vertices[raw.polygon_begin[p]]];
+      for(std::size_t k = raw.polygon_begin[p]; k < raw.polygon_begin[p + 1]; ++k)
+      {
+        positions.insert(raw.points[raw.polygon_vertices[k]]);
+        if(k + 2 < raw.polygon_begin[p + 1])
+        {
+          const std::array<double, 3>& b = raw.points[raw.polygon_vertices[k + 1]];
+          const std::array<double, 3>& c = raw.points[raw.polygon_vertices[k + 2]];
+          raw_volume += CGAL::to_double(CGAL::determinant(K::Vector_3(o[0], o[1], o[2]), K::Vector_3(b[0], b[1], b[2]),
+                                                          K::Vector_3(c[0], c[1], c[2]))) / 6;
+        }
+      }
+      raw_degenerate += positions.size() < raw.polygon_begin[p + 1] - raw.polygon_begin[p];
+    }
+    EXPECT_GT(raw_degenerate, 10u) << "the set-up no longer has rounding degeneracies: the test tests nothing";
+
+    Soup s;
+    BI::extract_boolean_isosurface(grid, fields, e, s, BI::parameters::close_at_domain_boundary(close));
+    EXPECT_TRUE(is_closed_oriented_manifold(s)) << close; // includes has_no_degenerate_polygon()
+    EXPECT_GT(s.polygons.size(), 149000u);
+    EXPECT_LT(s.polygons.size(), raw.labels.size());
+    // No point moved: the volume is that of the raw polygons.
+    EXPECT_NEAR(volume(s), raw_volume, 1e-13);
+    EXPECT_NEAR(volume(s), 0.7512277, 1e-6);
+  }
 }

@@ -11,6 +11,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_chunk.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_tetrahedron.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 
@@ -55,37 +56,6 @@ inline double seconds_since(const std::chrono::steady_clock::time_point& t)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// The polygons of one chunk of tetrahedra, with chunk-local vertex indices.
-struct Tbiso_chunk
-{
-  std::vector<Tbiso_vertex_key> keys;
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::size_t> polygon_begin{0};
-  std::vector<std::size_t> polygon_vertices;
-  std::vector<int> labels;
-  std::size_t evaluated = 0;
-  std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> index;
-
-  // Called from inside the evaluator's `emit`: coordinates are computed only
-  // for a key seen for the first time (a vertex is met by about 6 polygons).
-  void add(int label, const Tbiso_tetrahedron_evaluator::Vertex* v, std::size_t n,
-           const Tbiso_tetrahedron_evaluator& evaluator)
-  {
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      auto inserted = index.emplace(v[k].key, keys.size());
-      if(inserted.second)
-      {
-        keys.push_back(v[k].key);
-        points.push_back(evaluator.point(v[k]));
-      }
-      polygon_vertices.push_back(inserted.first->second);
-    }
-    polygon_begin.push_back(polygon_vertices.size());
-    labels.push_back(label);
-  }
-};
-
 template <typename Point_3>
 void check_fields(std::size_t number_of_vertices, const Scalar_fields& fields, const Boolean_expression& expression)
 {
@@ -98,43 +68,36 @@ void check_fields(std::size_t number_of_vertices, const Scalar_fields& fields, c
   fields.check_finite();
 }
 
-// Appends the chunks, in order, to `out`.  Vertices are welded by key;
-// `shared(key)` tells whether a key may occur in another chunk (only those
-// go through the global map).  The order is that of first appearance, so the
-// result does not depend on how the chunks were scheduled.
+// Appends the chunks, in order, to `out` (see `weld_chunk()`).  Vertices
+// are welded by key; `shared(key)` tells whether a key may occur in another
+// chunk (only those go through the global map).  The order is that of first
+// appearance, so the result does not depend on how the chunks were scheduled.
 template <typename Point_3, typename SharedKey>
 void weld_chunks(std::vector<Tbiso_chunk>& chunks, Boolean_isosurface_soup<Point_3>& out, const SharedKey& shared)
 {
   out.clear();
   std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> global;
-  std::vector<std::size_t> to_global;
+  std::size_t next_index = 0;
   for(Tbiso_chunk& chunk : chunks)
   {
     chunk.index.clear();
-    to_global.resize(chunk.keys.size());
-    for(std::size_t v = 0; v < chunk.keys.size(); ++v)
-    {
-      if(shared(chunk.keys[v]))
-      {
-        auto inserted = global.emplace(chunk.keys[v], out.points.size());
-        to_global[v] = inserted.first->second;
-        if(!inserted.second)
-          continue;
-      }
-      else
-        to_global[v] = out.points.size();
-      const std::array<double, 3>& p = chunk.points[v];
-      out.points.push_back(Point_3(p[0], p[1], p[2]));
-    }
-    for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
-    {
-      std::vector<std::size_t> polygon;
-      polygon.reserve(chunk.polygon_begin[p + 1] - chunk.polygon_begin[p]);
-      for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
-        polygon.push_back(to_global[chunk.polygon_vertices[k]]);
-      out.polygons.push_back(std::move(polygon));
-      out.face_fields.push_back(chunk.labels[p]);
-    }
+    weld_chunk(
+        chunk,
+        [&](const Tbiso_vertex_key& key) {
+          if(!shared(key))
+            return tbiso_no_index();
+          const auto found = global.find(key);
+          return found == global.end() ? tbiso_no_index() : found->second;
+        },
+        [&](const Tbiso_vertex_key& key, std::size_t index) {
+          if(shared(key))
+            global.emplace(key, index);
+        },
+        next_index, [&](const std::array<double, 3>& p) { out.points.push_back(Point_3(p[0], p[1], p[2])); },
+        [&](const std::size_t* v, std::size_t n, int label) {
+          out.polygons.emplace_back(v, v + n);
+          out.face_fields.push_back(label);
+        });
     chunk = Tbiso_chunk(); // release memory early
   }
 }
