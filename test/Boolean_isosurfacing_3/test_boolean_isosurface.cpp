@@ -293,11 +293,12 @@ TEST(BooleanIsosurface, PlanesThroughGridVerticesGiveExactVolumes)
   const Soup box = extract(grid, {plane(1, 0, 0, -0.25), plane(0, 1, 0, 0.5), plane(0, 0, 1, 0)}, "f0 & f1 & f2");
   EXPECT_TRUE(is_closed_oriented_manifold(box));
   EXPECT_NEAR(volume(box), 1.25 * 0.5 * 1, 1e-12);
-  // Creases: the 9 box edges on a field face (the 3 between two faces on the
-  // domain boundary are not: one label).  Corners: where 3 labels meet.
+  // Creases: the 12 box edges, the 3 between two faces on different planes
+  // of the domain boundary included.  Corners: the 8 box corners, where 3
+  // labels or boundary planes meet.
   const BI::Crease_network creases = BI::extract_crease_network(box);
-  EXPECT_EQ(creases.corners.size(), 4u);
-  EXPECT_EQ(creases.polylines.size(), 6u);
+  EXPECT_EQ(creases.corners.size(), 8u);
+  EXPECT_EQ(creases.polylines.size(), 12u);
   bool found_triple_corner = false;
   for(std::size_t c : creases.corners)
     found_triple_corner |= box.points[c] == Point(0.25, -0.5, 0);
@@ -482,8 +483,11 @@ TEST(BooleanIsosurface, ThreePlanesThroughAPointInsideATetrahedron)
   const Soup box = extract(grid, {plane(1, 0, 0, -a), plane(0, 1, 0, -b), plane(0, 0, 1, -c)}, "f0 & f1 & f2");
   EXPECT_TRUE(is_closed_oriented_manifold(box));
   EXPECT_NEAR(volume(box), (a + 1) * (b + 1) * (c + 1), 1e-12);
+  // The 8 box corners: 1 where the three planes meet, 3 where two planes meet
+  // the domain boundary, 3 where one does, and the domain box's own corner.
   const BI::Crease_network creases = BI::extract_crease_network(box);
-  EXPECT_EQ(creases.corners.size(), 4u);
+  EXPECT_EQ(creases.corners.size(), 8u);
+  EXPECT_EQ(creases.polylines.size(), 12u);
   double nearest = 1e9;
   for(std::size_t v : creases.corners)
     nearest = std::min(nearest, std::sqrt(CGAL::to_double(CGAL::squared_distance(box.points[v], Point(a, b, c)))));
@@ -685,4 +689,64 @@ TEST(BooleanIsosurface, DemoHasNoDegeneratePolygons)
     EXPECT_NEAR(volume(s), raw_volume, 1e-13);
     EXPECT_NEAR(volume(s), 0.7512277, 1e-6);
   }
+}
+
+// With closing, the domain boundary's own edges and corners are creases and
+// corners: the whole grid box (a sphere containing it) has 8 corners and 12
+// crease polylines, on the grid and on the same tetrahedra as a mesh.
+TEST(BooleanIsosurface, ClosingFacesOfDifferentBoundaryPlanesMeetAtCreases)
+{
+  const Grid grid = Grid::spanning(Point(-1, -0.5, 0), Point(1, 0.5, 0.75), {9, 6, 5});
+  const Soup box = extract(grid, {sphere(0, 0, 0, 10)}, "f0");
+  ASSERT_TRUE(is_closed_oriented_manifold(box));
+  EXPECT_NEAR(volume(box), 2 * 1 * 0.75, 1e-12);
+  ASSERT_EQ(box.face_boundary_planes.size(), box.polygons.size());
+  std::set<int> planes(box.face_boundary_planes.begin(), box.face_boundary_planes.end());
+  EXPECT_EQ(planes, (std::set<int>{0, 1, 2, 3, 4, 5}));
+  for(std::size_t p = 0; p < box.polygons.size(); ++p)
+  {
+    // Every vertex of a closing face is on its box face.
+    const int axis = box.face_boundary_planes[p] / 2;
+    const double at = box.face_boundary_planes[p] % 2 ? grid.point(grid.number_of_vertices() - 1)[axis]
+                                                       : grid.point(0)[axis];
+    for(std::size_t v : box.polygons[p])
+      EXPECT_EQ(box.points[v][axis], at);
+  }
+  const BI::Crease_network creases = BI::extract_crease_network(box);
+  EXPECT_EQ(creases.corners.size(), 8u);
+  EXPECT_EQ(creases.polylines.size(), 12u);
+  EXPECT_EQ(creases.number_of_crease_edges, 4u * (8 + 5 + 4));
+  for(std::size_t c : creases.corners)
+  {
+    const Point& p = box.points[c];
+    EXPECT_TRUE((p.x() == -1 || p.x() == 1) && (p.y() == -0.5 || p.y() == 0.5) && (p.z() == 0 || p.z() == 0.75)) << p;
+  }
+  // Without the planes (a soup read from a file) the box is one label.
+  Soup plain = box;
+  plain.face_boundary_planes.clear();
+  EXPECT_EQ(BI::extract_crease_network(plain).number_of_crease_edges, 0u);
+
+  // The same tetrahedra as an unstructured mesh: its boundary faces grouped
+  // into coplanar sets give the same six planes.
+  std::vector<Point> points;
+  for(std::size_t v = 0; v < grid.number_of_vertices(); ++v)
+    points.push_back(grid.point(v));
+  std::vector<std::array<std::size_t, 4>> tets;
+  const auto n = grid.vertex_counts();
+  for(std::size_t k = 0; k + 1 < n[2]; ++k)
+    for(std::size_t j = 0; j + 1 < n[1]; ++j)
+      for(std::size_t i = 0; i + 1 < n[0]; ++i)
+        for(int t = 0; t < 6; ++t)
+          tets.push_back(grid.tetrahedron(i, j, k, t));
+  const BI::Tetrahedral_mesh_3<K> mesh(points, tets);
+  Soup from_mesh;
+  BI::extract_boolean_isosurface(mesh, BI::sample_fields(mesh, std::vector<Field>{sphere(0, 0, 0, 10)}),
+                                 BI::Boolean_expression::parse("f0"), from_mesh,
+                                 BI::parameters::close_at_domain_boundary(true));
+  ASSERT_TRUE(is_closed_oriented_manifold(from_mesh));
+  std::set<int> mesh_planes(from_mesh.face_boundary_planes.begin(), from_mesh.face_boundary_planes.end());
+  EXPECT_EQ(mesh_planes.size(), 6u);
+  const BI::Crease_network mesh_creases = BI::extract_crease_network(from_mesh);
+  EXPECT_EQ(mesh_creases.corners.size(), 8u);
+  EXPECT_EQ(mesh_creases.polylines.size(), 12u);
 }

@@ -213,7 +213,7 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
             above.emplace(key, index);
         },
         next_index, [&](const std::array<double, 3>& p) { sink.add_point(p); },
-        [&](const std::size_t* v, std::size_t count, int label) {
+        [&](const std::size_t* v, std::size_t count, int label, int) {
           sink.add_polygon(v, count, label);
           ++stats.number_of_polygons;
         });

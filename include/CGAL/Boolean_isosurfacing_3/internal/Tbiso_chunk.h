@@ -31,13 +31,16 @@ struct Tbiso_chunk
   std::vector<std::size_t> polygon_begin{0};
   std::vector<std::size_t> polygon_vertices;
   std::vector<int> labels;
+  // For a face closing the set on the domain boundary, the boundary plane it
+  // lies on (see Boolean_isosurface_soup::face_boundary_planes); else -1.
+  std::vector<int> planes;
   std::size_t evaluated = 0;
   std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> index;
 
   // Called from inside the evaluator's `emit`: coordinates are computed only
   // for a key seen for the first time (a vertex is met by about 6 polygons).
   void add(int label, const Tbiso_tetrahedron_evaluator::Vertex* v, std::size_t n,
-           const Tbiso_tetrahedron_evaluator& evaluator)
+           const Tbiso_tetrahedron_evaluator& evaluator, int plane = -1)
   {
     for(std::size_t k = 0; k < n; ++k)
     {
@@ -51,6 +54,7 @@ struct Tbiso_chunk
     }
     polygon_begin.push_back(polygon_vertices.size());
     labels.push_back(label);
+    planes.push_back(plane);
   }
 };
 
@@ -124,7 +128,7 @@ inline bool all_collinear(const std::vector<std::array<double, 3>>& p, const std
 //
 // `lookup(key)` returns the output index that an earlier chunk gave the key,
 // or tbiso_no_index(); `publish(key, index)` records a key for later chunks;
-// `add_point(p)` and `add_polygon(vertices, n, label)` receive the output.
+// `add_point(p)` and `add_polygon(vertices, n, label, plane)` receive the output.
 template <typename Lookup, typename Publish, typename AddPoint, typename AddPolygon>
 void weld_chunk(Tbiso_chunk& chunk, const Lookup& lookup, const Publish& publish, std::size_t& next_index,
                 const AddPoint& add_point, const AddPolygon& add_polygon)
@@ -189,9 +193,10 @@ void weld_chunk(Tbiso_chunk& chunk, const Lookup& lookup, const Publish& publish
 
   // The polygons on class roots, split at repeated vertices.
   std::vector<std::vector<std::size_t>> polygons;
-  std::vector<int> labels;
+  std::vector<int> labels, planes;
   polygons.reserve(np);
   labels.reserve(np);
+  planes.reserve(np);
   std::vector<std::size_t> loop;
   for(std::size_t p = 0; p < np; ++p)
   {
@@ -210,6 +215,7 @@ void weld_chunk(Tbiso_chunk& chunk, const Lookup& lookup, const Publish& publish
       {
         polygons.emplace_back(repeated, loop.end());
         labels.push_back(chunk.labels[p]);
+        planes.push_back(chunk.planes[p]);
       }
       loop.erase(repeated + 1, loop.end());
     }
@@ -217,6 +223,7 @@ void weld_chunk(Tbiso_chunk& chunk, const Lookup& lookup, const Publish& publish
     {
       polygons.push_back(loop);
       labels.push_back(chunk.labels[p]);
+      planes.push_back(chunk.planes[p]);
     }
   }
 
@@ -339,7 +346,7 @@ void weld_chunk(Tbiso_chunk& chunk, const Lookup& lookup, const Publish& publish
     polygon.clear();
     for(std::size_t v : polygons[p])
       polygon.push_back(to_global[v]);
-    add_polygon(polygon.data(), polygon.size(), labels[p]);
+    add_polygon(polygon.data(), polygon.size(), labels[p], planes[p]);
   }
 }
 
