@@ -750,3 +750,35 @@ TEST(BooleanIsosurface, ClosingFacesOfDifferentBoundaryPlanesMeetAtCreases)
   EXPECT_EQ(mesh_creases.corners.size(), 8u);
   EXPECT_EQ(mesh_creases.polylines.size(), 12u);
 }
+
+// A face on the domain boundary on which a field vanishes identically is that
+// field's face when the field bounds the set there, and a closing face
+// otherwise.
+TEST(BooleanIsosurface, BoundaryFacesOnAZeroSetTakeTheFieldsLabel)
+{
+  const Grid grid = unit_grid(5);
+  const Field left = plane(1, 0, 0, 1); // x + 1: zero on the box face x = -1, positive inside
+  const Field everything = sphere(0, 0, 0, 10);
+  // !f0 is x > -1: bounded by f0 on x = -1, closed by the domain elsewhere.
+  const Soup bounded = extract(grid, {left}, "!f0");
+  ASSERT_TRUE(is_closed_oriented_manifold(bounded));
+  EXPECT_NEAR(volume(bounded), 8, 1e-12);
+  std::size_t on_left = 0;
+  for(std::size_t p = 0; p < bounded.polygons.size(); ++p)
+  {
+    bool at_left = true;
+    for(std::size_t v : bounded.polygons[p])
+      at_left &= bounded.points[v].x() == -1;
+    EXPECT_EQ(bounded.face_fields[p], at_left ? 0 : Soup::domain_boundary);
+    on_left += at_left;
+  }
+  EXPECT_EQ(on_left, 2u * 4 * 4);
+  // !f0 | f1 with f1 < 0 everywhere does not depend on f0: all closing faces.
+  const Soup unbounded = extract(grid, {left, everything}, "!f0 | f1");
+  ASSERT_TRUE(is_closed_oriented_manifold(unbounded));
+  for(int label : unbounded.face_fields)
+    EXPECT_EQ(label, Soup::domain_boundary);
+  // Either way the box keeps its 8 corners and 12 edges.
+  EXPECT_EQ(BI::extract_crease_network(bounded).corners.size(), 8u);
+  EXPECT_EQ(BI::extract_crease_network(unbounded).corners.size(), 8u);
+}

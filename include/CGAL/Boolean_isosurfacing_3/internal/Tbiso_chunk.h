@@ -168,8 +168,14 @@ void weld_chunk(Tbiso_chunk& chunk, const Lookup& lookup, const Publish& publish
   if(merged)
   {
     for(std::size_t v = 0; v < nv; ++v)
-      if(find(v) != v)
-        members[leader[v]].push_back(v);
+    {
+      const std::size_t root = find(v);
+      if(root != v)
+        members[root].push_back(v);
+    }
+    for(auto& m : members)
+      for(std::size_t v : m.second)
+        leader[v] = m.first; // flat: every member points at its root
     for(auto& m : members)
     {
       std::size_t known = lookup(chunk.keys[m.first]);
