@@ -52,6 +52,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <thread>
 #include <sys/resource.h>
 #include <unistd.h>
 #include <utility>
@@ -580,6 +581,62 @@ void smooth(Soup& soup, const BI::Crease_network& creases, const Options& o)
     soup.points[std::size_t(v)] = mesh.point(v);
 }
 
+// The memory the process may still use: MemAvailable, or less under a
+// limit on the address space; 0 when unknown.
+double available_bytes()
+{
+  double available = 0;
+  if(std::FILE* f = std::fopen("/proc/meminfo", "r"))
+  {
+    char line[256];
+    while(std::fgets(line, sizeof line, f))
+    {
+      unsigned long long kb = 0;
+      if(std::sscanf(line, "MemAvailable: %llu kB", &kb) == 1)
+        available = double(kb) * 1024;
+    }
+    std::fclose(f);
+  }
+  rlimit limit;
+  if(getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+     (available == 0 || double(limit.rlim_cur) < available))
+    available = double(limit.rlim_cur);
+  return available;
+}
+
+std::string gigabytes(double bytes)
+{
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f GB", bytes / 1e9);
+  return text;
+}
+
+// Refuses, before allocating anything, a grid whose field values alone do not
+// fit in memory: 8 bytes per vertex and field (in core), or per vertex of the
+// slabs in flight (out of core).  The surface and the sign masks come on top,
+// so this is a lower bound.
+void check_grid_memory(const Options& o, std::size_t number_of_fields)
+{
+  const std::array<std::size_t, 3>& n = *o.grid;
+  const double vertices = double(n[0]) * double(n[1]) * double(n[2]);
+  const double fields = double(std::max<std::size_t>(1, number_of_fields));
+  double values = vertices * fields;
+  std::string what = std::to_string(n[0]) + " x " + std::to_string(n[1]) + " x " + std::to_string(n[2]) + " vertices";
+  if(o.out_of_core)
+  {
+    const double slab = double(o.slab_layers ? o.slab_layers : 8) + 3;
+    const double in_flight = 2 * std::max(1u, std::thread::hardware_concurrency());
+    values = std::min(values, double(n[0]) * double(n[1]) * slab * fields * in_flight);
+    what += " (out of core: the slabs in flight)";
+  }
+  const double needed = 8 * values;
+  const double available = available_bytes();
+  if(vertices > 1e18 || (available > 0 && needed > available))
+    throw Error("--grid: " + what + " x " + std::to_string(std::size_t(fields)) + " field" + (fields == 1 ? "" : "s") +
+                " need at least " + gigabytes(needed) + " for the field values, but only " + gigabytes(available) +
+                " of memory are available (use a coarser grid" + (o.out_of_core ? ", or a smaller --slab-size)" : ", or --out-of-core with a raw --fields file)"));
+}
+
 struct Input
 {
   std::optional<Grid> grid;
@@ -638,6 +695,8 @@ Input read_input(const Options& o, double& fields_seconds)
     throw Error("--field-count is for --fields FILE");
   if(o.field_specs.size() > 64)
     throw Error("at most 64 fields are supported");
+  if(o.grid)
+    check_grid_memory(o, o.field_specs.empty() ? o.field_count : o.field_specs.size());
   auto start = std::chrono::steady_clock::now();
   if(o.grid)
   {
@@ -815,6 +874,7 @@ int run_out_of_core(const Options& o)
   if(expression.number_of_variables() > o.field_count)
     throw Error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
                 " but there are only " + std::to_string(o.field_count) + " fields");
+  check_grid_memory(o, o.field_count);
   const std::array<double, 6> b = o.box ? *o.box : std::array<double, 6>{-1, -1, -1, 1, 1, 1};
   const Grid grid = Grid::spanning(Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5]), *o.grid);
   Input in;

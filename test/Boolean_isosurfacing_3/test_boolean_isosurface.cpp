@@ -55,6 +55,32 @@ double volume(const Soup& s)
   return v;
 }
 
+// No polygon has two vertices at the same position, or zero area: its
+// vertices are not all collinear (exact predicate on the doubles) and its
+// area vector, computed in double, is not zero.
+::testing::AssertionResult has_no_degenerate_polygon(const Soup& s)
+{
+  for(std::size_t p = 0; p < s.polygons.size(); ++p)
+  {
+    const auto& poly = s.polygons[p];
+    std::set<Point> positions;
+    for(std::size_t v : poly)
+      positions.insert(s.points[v]);
+    if(positions.size() != poly.size())
+      return ::testing::AssertionFailure() << "polygon " << p << " has two vertices at " << s.points[poly[0]]
+                                           << " (or nearby) at the same position";
+    bool collinear = true;
+    for(std::size_t k = 2; k < poly.size() && collinear; ++k)
+      collinear = CGAL::collinear(s.points[poly[0]], s.points[poly[1]], s.points[poly[k]]);
+    K::Vector_3 area(0, 0, 0);
+    for(std::size_t k = 1; k + 1 < poly.size(); ++k)
+      area = area + CGAL::cross_product(s.points[poly[k]] - s.points[poly[0]], s.points[poly[k + 1]] - s.points[poly[0]]);
+    if(collinear || area.squared_length() == 0)
+      return ::testing::AssertionFailure() << "polygon " << p << " at " << s.points[poly[0]] << " has zero area";
+  }
+  return ::testing::AssertionSuccess();
+}
+
 // Every directed edge once and its reverse once: closed, consistently
 // oriented, no edge with more than two faces.
 ::testing::AssertionResult is_closed_oriented_manifold(const Soup& s)
@@ -81,6 +107,9 @@ double volume(const Soup& s)
       return ::testing::AssertionFailure() << "edge (" << e.first.first << "," << e.first.second << ") at "
                                            << s.points[e.first.first] << " is on the border";
   }
+  const ::testing::AssertionResult nondegenerate = has_no_degenerate_polygon(s);
+  if(!nondegenerate)
+    return nondegenerate;
   // Welded: no two points equal.
   std::vector<Point> p = s.points;
   std::sort(p.begin(), p.end());
@@ -264,11 +293,12 @@ TEST(BooleanIsosurface, PlanesThroughGridVerticesGiveExactVolumes)
   const Soup box = extract(grid, {plane(1, 0, 0, -0.25), plane(0, 1, 0, 0.5), plane(0, 0, 1, 0)}, "f0 & f1 & f2");
   EXPECT_TRUE(is_closed_oriented_manifold(box));
   EXPECT_NEAR(volume(box), 1.25 * 0.5 * 1, 1e-12);
-  // Creases: the 9 box edges on a field face (the 3 between two faces on the
-  // domain boundary are not: one label).  Corners: where 3 labels meet.
+  // Creases: the 12 box edges, the 3 between two faces on different planes
+  // of the domain boundary included.  Corners: the 8 box corners, where 3
+  // labels or boundary planes meet.
   const BI::Crease_network creases = BI::extract_crease_network(box);
-  EXPECT_EQ(creases.corners.size(), 4u);
-  EXPECT_EQ(creases.polylines.size(), 6u);
+  EXPECT_EQ(creases.corners.size(), 8u);
+  EXPECT_EQ(creases.polylines.size(), 12u);
   bool found_triple_corner = false;
   for(std::size_t c : creases.corners)
     found_triple_corner |= box.points[c] == Point(0.25, -0.5, 0);
@@ -453,8 +483,11 @@ TEST(BooleanIsosurface, ThreePlanesThroughAPointInsideATetrahedron)
   const Soup box = extract(grid, {plane(1, 0, 0, -a), plane(0, 1, 0, -b), plane(0, 0, 1, -c)}, "f0 & f1 & f2");
   EXPECT_TRUE(is_closed_oriented_manifold(box));
   EXPECT_NEAR(volume(box), (a + 1) * (b + 1) * (c + 1), 1e-12);
+  // The 8 box corners: 1 where the three planes meet, 3 where two planes meet
+  // the domain boundary, 3 where one does, and the domain box's own corner.
   const BI::Crease_network creases = BI::extract_crease_network(box);
-  EXPECT_EQ(creases.corners.size(), 4u);
+  EXPECT_EQ(creases.corners.size(), 8u);
+  EXPECT_EQ(creases.polylines.size(), 12u);
   double nearest = 1e9;
   for(std::size_t v : creases.corners)
     nearest = std::min(nearest, std::sqrt(CGAL::to_double(CGAL::squared_distance(box.points[v], Point(a, b, c)))));
@@ -604,4 +637,148 @@ TEST(BooleanIsosurface, SevenFieldsCubeMinusBall)
       EXPECT_TRUE(s.face_fields[p] >= 0 && s.face_fields[p] <= 6);
   }
   EXPECT_LT(previous, 2e-3);
+}
+
+// The tbiso demo: four spheres centred on the vertices of a regular
+// tetrahedron, "inside at least two".  The spheres are mirrored onto each
+// other by coordinate swaps, and |p - c|^2 summed in another order makes
+// their sampled values differ by a few ulps where they should be equal; the
+// exact arrangement then has cells of size 1e-16, whose polygons are
+// degenerate once rounded to double (48 with two vertices at one position, 6
+// more collinear ones on this set-up before the cleanup of weld_chunk()).
+TEST(BooleanIsosurface, DemoHasNoDegeneratePolygons)
+{
+  const double a = 0.45 / std::sqrt(3.0), r = 0.62;
+  const Grid grid = unit_grid(128);
+  const BI::Scalar_fields fields = BI::sample_fields(
+      grid, std::vector<Field>{sphere(a, a, a, r), sphere(a, -a, -a, r), sphere(-a, a, -a, r), sphere(-a, -a, a, r)});
+  const BI::Boolean_expression e = BI::Boolean_expression::parse("f0&f1 | f0&f2 | f0&f3 | f1&f2 | f1&f3 | f2&f3");
+  for(bool close : {false, true})
+  {
+    // The polygons as the exact evaluation emits them, before welding.
+    BI::internal::Tbiso_chunk raw;
+    BI::internal::extract_grid_slab(grid, fields.data().data(), 0, 4, BI::internal::Tbiso_tetrahedron_evaluator(e, close),
+                                    0, 127, raw);
+    std::size_t raw_degenerate = 0;
+    double raw_volume = 0;
+    for(std::size_t p = 0; p + 1 < raw.polygon_begin.size(); ++p)
+    {
+      std::set<std::array<double, 3>> positions;
+      const std::array<double, 3>& o = raw.points[raw.polygon_vertices[raw.polygon_begin[p]]];
+      for(std::size_t k = raw.polygon_begin[p]; k < raw.polygon_begin[p + 1]; ++k)
+      {
+        positions.insert(raw.points[raw.polygon_vertices[k]]);
+        if(k + 2 < raw.polygon_begin[p + 1])
+        {
+          const std::array<double, 3>& b = raw.points[raw.polygon_vertices[k + 1]];
+          const std::array<double, 3>& c = raw.points[raw.polygon_vertices[k + 2]];
+          raw_volume += CGAL::to_double(CGAL::determinant(K::Vector_3(o[0], o[1], o[2]), K::Vector_3(b[0], b[1], b[2]),
+                                                          K::Vector_3(c[0], c[1], c[2]))) / 6;
+        }
+      }
+      raw_degenerate += positions.size() < raw.polygon_begin[p + 1] - raw.polygon_begin[p];
+    }
+    EXPECT_GT(raw_degenerate, 10u) << "the set-up no longer has rounding degeneracies: the test tests nothing";
+
+    Soup s;
+    BI::extract_boolean_isosurface(grid, fields, e, s, BI::parameters::close_at_domain_boundary(close));
+    EXPECT_TRUE(is_closed_oriented_manifold(s)) << close; // includes has_no_degenerate_polygon()
+    EXPECT_GT(s.polygons.size(), 149000u);
+    EXPECT_LT(s.polygons.size(), raw.labels.size());
+    // No point moved: the volume is that of the raw polygons.
+    EXPECT_NEAR(volume(s), raw_volume, 1e-13);
+    EXPECT_NEAR(volume(s), 0.7512277, 1e-6);
+  }
+}
+
+// With closing, the domain boundary's own edges and corners are creases and
+// corners: the whole grid box (a sphere containing it) has 8 corners and 12
+// crease polylines, on the grid and on the same tetrahedra as a mesh.
+TEST(BooleanIsosurface, ClosingFacesOfDifferentBoundaryPlanesMeetAtCreases)
+{
+  const Grid grid = Grid::spanning(Point(-1, -0.5, 0), Point(1, 0.5, 0.75), {9, 6, 5});
+  const Soup box = extract(grid, {sphere(0, 0, 0, 10)}, "f0");
+  ASSERT_TRUE(is_closed_oriented_manifold(box));
+  EXPECT_NEAR(volume(box), 2 * 1 * 0.75, 1e-12);
+  ASSERT_EQ(box.face_boundary_planes.size(), box.polygons.size());
+  std::set<int> planes(box.face_boundary_planes.begin(), box.face_boundary_planes.end());
+  EXPECT_EQ(planes, (std::set<int>{0, 1, 2, 3, 4, 5}));
+  for(std::size_t p = 0; p < box.polygons.size(); ++p)
+  {
+    // Every vertex of a closing face is on its box face.
+    const int axis = box.face_boundary_planes[p] / 2;
+    const double at = box.face_boundary_planes[p] % 2 ? grid.point(grid.number_of_vertices() - 1)[axis]
+                                                       : grid.point(0)[axis];
+    for(std::size_t v : box.polygons[p])
+      EXPECT_EQ(box.points[v][axis], at);
+  }
+  const BI::Crease_network creases = BI::extract_crease_network(box);
+  EXPECT_EQ(creases.corners.size(), 8u);
+  EXPECT_EQ(creases.polylines.size(), 12u);
+  EXPECT_EQ(creases.number_of_crease_edges, 4u * (8 + 5 + 4));
+  for(std::size_t c : creases.corners)
+  {
+    const Point& p = box.points[c];
+    EXPECT_TRUE((p.x() == -1 || p.x() == 1) && (p.y() == -0.5 || p.y() == 0.5) && (p.z() == 0 || p.z() == 0.75)) << p;
+  }
+  // Without the planes (a soup read from a file) the box is one label.
+  Soup plain = box;
+  plain.face_boundary_planes.clear();
+  EXPECT_EQ(BI::extract_crease_network(plain).number_of_crease_edges, 0u);
+
+  // The same tetrahedra as an unstructured mesh: its boundary faces grouped
+  // into coplanar sets give the same six planes.
+  std::vector<Point> points;
+  for(std::size_t v = 0; v < grid.number_of_vertices(); ++v)
+    points.push_back(grid.point(v));
+  std::vector<std::array<std::size_t, 4>> tets;
+  const auto n = grid.vertex_counts();
+  for(std::size_t k = 0; k + 1 < n[2]; ++k)
+    for(std::size_t j = 0; j + 1 < n[1]; ++j)
+      for(std::size_t i = 0; i + 1 < n[0]; ++i)
+        for(int t = 0; t < 6; ++t)
+          tets.push_back(grid.tetrahedron(i, j, k, t));
+  const BI::Tetrahedral_mesh_3<K> mesh(points, tets);
+  Soup from_mesh;
+  BI::extract_boolean_isosurface(mesh, BI::sample_fields(mesh, std::vector<Field>{sphere(0, 0, 0, 10)}),
+                                 BI::Boolean_expression::parse("f0"), from_mesh,
+                                 BI::parameters::close_at_domain_boundary(true));
+  ASSERT_TRUE(is_closed_oriented_manifold(from_mesh));
+  std::set<int> mesh_planes(from_mesh.face_boundary_planes.begin(), from_mesh.face_boundary_planes.end());
+  EXPECT_EQ(mesh_planes.size(), 6u);
+  const BI::Crease_network mesh_creases = BI::extract_crease_network(from_mesh);
+  EXPECT_EQ(mesh_creases.corners.size(), 8u);
+  EXPECT_EQ(mesh_creases.polylines.size(), 12u);
+}
+
+// A face on the domain boundary on which a field vanishes identically is that
+// field's face when the field bounds the set there, and a closing face
+// otherwise.
+TEST(BooleanIsosurface, BoundaryFacesOnAZeroSetTakeTheFieldsLabel)
+{
+  const Grid grid = unit_grid(5);
+  const Field left = plane(1, 0, 0, 1); // x + 1: zero on the box face x = -1, positive inside
+  const Field everything = sphere(0, 0, 0, 10);
+  // !f0 is x > -1: bounded by f0 on x = -1, closed by the domain elsewhere.
+  const Soup bounded = extract(grid, {left}, "!f0");
+  ASSERT_TRUE(is_closed_oriented_manifold(bounded));
+  EXPECT_NEAR(volume(bounded), 8, 1e-12);
+  std::size_t on_left = 0;
+  for(std::size_t p = 0; p < bounded.polygons.size(); ++p)
+  {
+    bool at_left = true;
+    for(std::size_t v : bounded.polygons[p])
+      at_left &= bounded.points[v].x() == -1;
+    EXPECT_EQ(bounded.face_fields[p], at_left ? 0 : Soup::domain_boundary);
+    on_left += at_left;
+  }
+  EXPECT_EQ(on_left, 2u * 4 * 4);
+  // !f0 | f1 with f1 < 0 everywhere does not depend on f0: all closing faces.
+  const Soup unbounded = extract(grid, {left, everything}, "!f0 | f1");
+  ASSERT_TRUE(is_closed_oriented_manifold(unbounded));
+  for(int label : unbounded.face_fields)
+    EXPECT_EQ(label, Soup::domain_boundary);
+  // Either way the box keeps its 8 corners and 12 edges.
+  EXPECT_EQ(BI::extract_crease_network(bounded).corners.size(), 8u);
+  EXPECT_EQ(BI::extract_crease_network(unbounded).corners.size(), 8u);
 }

@@ -379,7 +379,11 @@ TEST_F(TbisoTool, OctopusMeshSphereAndPlane)
 
 // tet/bunny.mesh tetrahedralizes the bunny's convex hull with the surface of
 // meshes/bunny.off as internal faces; the signed distance to that surface
-// and a plane y = 0.11 give the part of the bunny below the plane.
+// and a plane y = 0.11 give the part of the bunny below the plane (the
+// README's example).  Where the bunny touches its hull, its faces are on the
+// domain boundary and f0 vanishes on them: they are f0's faces, not closing
+// faces (they were 97 closing faces, and the cut loop was broken into 35
+// polylines with 13 corners), so the crease is the one cut loop.
 TEST_F(TbisoTool, BunnyBelowAPlaneMatchesAClip)
 {
   const std::string bunny = data_dir + "/meshes/bunny.off";
@@ -388,6 +392,9 @@ TEST_F(TbisoTool, BunnyBelowAPlaneMatchesAClip)
   ASSERT_EQ(r.status, 0) << r.err;
   const Soup soup = read_ply(file("b.ply"));
   EXPECT_TRUE(is_closed_surface(soup));
+  EXPECT_NE(r.out.find("1 polylines, 0 corners"), std::string::npos) << r.out;
+  EXPECT_EQ(std::set<int>(soup.face_fields.begin(), soup.face_fields.end()), (std::set<int>{0, 1}))
+      << "no closing face";
   const double v = volume(soup);
   EXPECT_NEAR(number_after(r.out, "volume "), v, 1e-9 * v);
   EXPECT_GT(v, 0);
@@ -402,6 +409,80 @@ TEST_F(TbisoTool, BunnyBelowAPlaneMatchesAClip)
   std::cout << "[ INFO     ] bunny below y = 0.11: tbiso " << v << ", PMP::clip " << reference << " (relative difference "
             << std::abs(v - reference) / reference << ")\n";
   EXPECT_NEAR(v, reference, 0.05 * reference) << "reference (PMP::clip) " << reference;
+}
+
+// The README's bunny example: the bunny below the plane y = 0.11, on a grid
+// around the bunny.  The set stays inside the domain, so there is no closing
+// face, and its crease is the one loop where the plane cuts the bunny.  (On
+// the bunny's own tetrahedral mesh the set is ill-posed: f0 is the distance
+// to the domain's boundary, of either sign there within rounding, and the set
+// reaches the boundary in scattered patches; see the test above.)
+TEST_F(TbisoTool, BunnyOnAGridHasOneCutLoop)
+{
+  const std::string bunny = data_dir + "/meshes/bunny.off";
+  const Result r = run("--grid 64 --box -0.1,0.025,-0.07,0.07,0.195,0.07 --field distance:" + bunny +
+                       " --field plane:0,1,0,-0.11 --expr \"f0 & f1\" --close -o " + file("b.ply") + " --creases " +
+                       file("b.txt") + " --corners " + file("b.xyz"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("1 polylines, 0 corners"), std::string::npos) << r.out;
+  const Soup soup = read_ply(file("b.ply"));
+  EXPECT_TRUE(is_closed_surface(soup));
+  std::set<int> labels(soup.face_fields.begin(), soup.face_fields.end());
+  EXPECT_EQ(labels, (std::set<int>{0, 1})) << "no closing face";
+  const auto polylines = read_number_lines(file("b.txt"));
+  ASSERT_EQ(polylines.size(), 1u);
+  const std::vector<double>& loop = polylines[0];
+  ASSERT_GE(loop.size(), 1 + 3 * 20u);
+  for(std::size_t k = 1; k < loop.size(); k += 3)
+    EXPECT_NEAR(loop[k + 1], 0.11, 1e-12) << "the loop lies on the cut plane";
+  EXPECT_EQ(std::vector<double>(loop.begin() + 1, loop.begin() + 4), std::vector<double>(loop.end() - 3, loop.end()))
+      << "closed";
+  Mesh mesh;
+  BI::IO::read_closed_triangle_mesh(bunny, mesh);
+  ASSERT_TRUE(PMP::clip(mesh, K::Plane_3(0, 1, 0, -0.11), CGAL::parameters::clip_volume(true)));
+  const double reference = CGAL::to_double(PMP::volume(mesh)), v = volume(soup);
+  std::cout << "[ INFO     ] bunny below y = 0.11 on a 64^3 grid: tbiso " << v << ", PMP::clip " << reference << "\n";
+  EXPECT_NEAR(v, reference, 0.03 * reference);
+}
+
+// With --close, the domain's own edges and corners are creases and corners:
+// the whole box (a sphere containing it) has 8 corners and 12 polylines.  A
+// sphere of radius 1.5 clipped by [-1, 1]^3 keeps 12 pieces of box edges; after
+// smoothing, the corners have not moved and the closing faces are still flat
+// on their box faces, so they still meet at 90 degrees.
+TEST_F(TbisoTool, ClosedBoxKeepsItsEdgesAndCornersWhenSmoothed)
+{
+  const Result box = run("--grid 9 --field sphere:0,0,0,10 --close");
+  ASSERT_EQ(box.status, 0) << box.err;
+  EXPECT_NE(box.out.find("creases:    96 edges, 12 polylines, 8 corners"), std::string::npos) << box.out;
+
+  const std::string common = "--grid 33 --field sphere:0,0,0,1.5 --close";
+  const Result plain = run(common + " -o " + file("p.ply") + " --corners " + file("p.xyz"));
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const Result smooth = run(common + " --smooth 10 -o " + file("s.ply") + " --corners " + file("s.xyz"));
+  ASSERT_EQ(smooth.status, 0) << smooth.err;
+  // Where the sphere crosses the 12 box edges: 24 corners.
+  EXPECT_EQ(count_lines(slurp(file("p.xyz"))), 24) << plain.out;
+  EXPECT_EQ(slurp(file("s.xyz")), slurp(file("p.xyz")));
+  const Soup a = read_ply(file("p.ply")), b = read_ply(file("s.ply"));
+  ASSERT_EQ(a.polygons, b.polygons);
+  std::size_t closing = 0, moved = 0;
+  for(std::size_t p = 0; p < b.polygons.size(); ++p)
+  {
+    if(b.face_fields[p] != Soup::domain_boundary)
+      continue;
+    ++closing;
+    const auto& poly = b.polygons[p];
+    K::Vector_3 n = CGAL::cross_product(b.points[poly[1]] - b.points[poly[0]], b.points[poly[2]] - b.points[poly[0]]);
+    n = n / std::sqrt(n.squared_length());
+    const double largest = std::max({std::abs(n.x()), std::abs(n.y()), std::abs(n.z())});
+    EXPECT_GT(largest, 1 - 1e-9) << "closing face " << p << " is no longer on a box face: normal " << n;
+    for(std::size_t v : poly)
+      moved += a.points[v] != b.points[v];
+  }
+  EXPECT_GT(closing, 100u);
+  EXPECT_GT(moved, 0u) << "the closing faces' inner vertices are smoothed within their plane";
+  EXPECT_TRUE(is_closed_surface(b));
 }
 
 TEST_F(TbisoTool, SmoothingKeepsCornersFixed)
@@ -457,11 +538,36 @@ TEST_F(TbisoTool, ParallelSequentialAndThreadLimitGiveTheSameFile)
   EXPECT_EQ(slurp(file("one.ply")), par);
 }
 
+// A grid too large for memory is refused before anything is allocated, with
+// the estimate: 5000^3 vertices x 4 fields x 8 bytes = 4000 GB.
+TEST_F(TbisoTool, GridTooLargeForMemoryIsRefusedWithTheEstimate)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const Result r = run("--grid 5000" + demo_fields());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("tbiso: error: --grid: 5000 x 5000 x 5000 vertices x 4 fields need at least 4000.0 GB", 0), 0u)
+      << r.err;
+  EXPECT_NE(r.err.find("available"), std::string::npos) << r.err;
+  EXPECT_LT(seconds, 5.0) << "refused before sampling";
+  // Anisotropic grids and out of core: the slabs in flight are what counts.
+  const Result flat = run("--grid 100000,100000,2" + demo_fields());
+  EXPECT_EQ(flat.status, 1);
+  EXPECT_NE(flat.err.find("need at least 640.0 GB"), std::string::npos) << flat.err;
+  const Result ooc = run("--grid 400000,400000,40 --fields " + file("f.f64") + " --field-count 1 --out-of-core -o " +
+                         file("o.ply"));
+  EXPECT_EQ(ooc.status, 1);
+  EXPECT_NE(ooc.err.find("out of core"), std::string::npos) << ooc.err;
+}
+
 TEST_F(TbisoTool, HelpAndOffOutput)
 {
   const Result help = run("--help");
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("usage: tbiso"), std::string::npos) << help.out;
+  EXPECT_EQ(help.err, "");
+  EXPECT_EQ(run("-h").out, help.out);
   const Result off = run("--grid 9 --field sphere:0,0,0,0.5 -o " + file("s.OFF"));
   EXPECT_EQ(off.status, 0) << off.err;
   EXPECT_EQ(slurp(file("s.OFF")).substr(0, 4), "OFF\n");

@@ -27,6 +27,14 @@ struct Boolean_isosurface_soup
   /// `face_fields[p]`: the index of the field polygon `p` lies on (the lowest
   /// index when several fields vanish on it), or `domain_boundary`.
   std::vector<int> face_fields;
+  /// `face_boundary_planes[p]`: for a polygon labelled `domain_boundary`, the
+  /// plane of the domain boundary it lies on, else -1.  On a grid the planes
+  /// are the box faces: 2 a + 0 at the minimum of axis a, 2 a + 1 at its
+  /// maximum.  On a tetrahedral mesh they are the maximal connected sets of
+  /// coplanar boundary faces (exact test).  Where closing faces of two planes
+  /// meet, `extract_crease_network()` makes a crease.  May be empty (a soup
+  /// read from a file): closing faces then count as one label.
+  std::vector<int> face_boundary_planes;
 
   std::size_t number_of_polygons() const { return polygons.size(); }
   void clear()
@@ -34,6 +42,7 @@ struct Boolean_isosurface_soup
     points.clear();
     polygons.clear();
     face_fields.clear();
+    face_boundary_planes.clear();
   }
 };
 

@@ -12,11 +12,14 @@
 #include <CGAL/Boolean_isosurfacing_3/Tetrahedral_mesh_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_chunk.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_tetrahedron.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/tags.h>
+
+#include <boost/functional/hash.hpp>
 
 #include <algorithm>
 #include <array>
@@ -51,36 +54,6 @@ struct Boolean_isosurface_statistics
 
 namespace internal {
 
-// The polygons of one chunk of tetrahedra, with chunk-local vertex indices.
-struct Tbiso_chunk
-{
-  std::vector<Tbiso_vertex_key> keys;
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::size_t> polygon_begin{0};
-  std::vector<std::size_t> polygon_vertices;
-  std::vector<int> labels;
-  std::size_t evaluated = 0;
-  std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> index;
-
-  // Called from inside the evaluator's `emit`: coordinates are computed only
-  // for a key seen for the first time (a vertex is met by about 6 polygons).
-  void add(int label, const Tbiso_tetrahedron_evaluator::Vertex* v, std::size_t n,
-           const Tbiso_tetrahedron_evaluator& evaluator)
-  {
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      auto inserted = index.emplace(v[k].key, keys.size());
-      if(inserted.second)
-      {
-        keys.push_back(v[k].key);
-        points.push_back(evaluator.point(v[k]));
-      }
-      polygon_vertices.push_back(inserted.first->second);
-    }
-    polygon_begin.push_back(polygon_vertices.size());
-    labels.push_back(label);
-  }
-};
 
 template <typename Point_3>
 void check_fields(std::size_t number_of_vertices, const Scalar_fields& fields, const Boolean_expression& expression)
@@ -94,47 +67,135 @@ void check_fields(std::size_t number_of_vertices, const Scalar_fields& fields, c
   fields.check_finite();
 }
 
-// Appends the chunks, in order, to `out`.  Vertices are welded by key;
-// `shared(key)` tells whether a key may occur in another chunk (only those
-// go through the global map).  The order is that of first appearance, so the
-// result does not depend on how the chunks were scheduled.
+// Appends the chunks, in order, to `out` (see `weld_chunk()`).  Vertices
+// are welded by key; `shared(key)` tells whether a key may occur in another
+// chunk (only those go through the global map).  The order is that of first
+// appearance, so the result does not depend on how the chunks were scheduled.
 template <typename Point_3, typename SharedKey>
 void weld_chunks(std::vector<Tbiso_chunk>& chunks, Boolean_isosurface_soup<Point_3>& out, const SharedKey& shared)
 {
   out.clear();
   std::unordered_map<Tbiso_vertex_key, std::size_t, Tbiso_vertex_key_hash> global;
-  std::vector<std::size_t> to_global;
+  std::size_t next_index = 0;
   for(Tbiso_chunk& chunk : chunks)
   {
     chunk.index.clear();
-    to_global.resize(chunk.keys.size());
-    for(std::size_t v = 0; v < chunk.keys.size(); ++v)
-    {
-      if(shared(chunk.keys[v]))
-      {
-        auto inserted = global.emplace(chunk.keys[v], out.points.size());
-        to_global[v] = inserted.first->second;
-        if(!inserted.second)
-          continue;
-      }
-      else
-        to_global[v] = out.points.size();
-      const std::array<double, 3>& p = chunk.points[v];
-      out.points.push_back(Point_3(p[0], p[1], p[2]));
-    }
-    for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
-    {
-      std::vector<std::size_t> polygon;
-      polygon.reserve(chunk.polygon_begin[p + 1] - chunk.polygon_begin[p]);
-      for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
-        polygon.push_back(to_global[chunk.polygon_vertices[k]]);
-      out.polygons.push_back(std::move(polygon));
-      out.face_fields.push_back(chunk.labels[p]);
-    }
+    weld_chunk(
+        chunk,
+        [&](const Tbiso_vertex_key& key) {
+          if(!shared(key))
+            return tbiso_no_index();
+          const auto found = global.find(key);
+          return found == global.end() ? tbiso_no_index() : found->second;
+        },
+        [&](const Tbiso_vertex_key& key, std::size_t index) {
+          if(shared(key))
+            global.emplace(key, index);
+        },
+        next_index, [&](const std::array<double, 3>& p) { out.points.push_back(Point_3(p[0], p[1], p[2])); },
+        [&](const std::size_t* v, std::size_t n, int label, int plane) {
+          out.polygons.emplace_back(v, v + n);
+          out.face_fields.push_back(label);
+          out.face_boundary_planes.push_back(plane);
+        });
     chunk = Tbiso_chunk(); // release memory early
   }
 }
 
+
+// The box face (2 axis + 0 at the minimum, + 1 at the maximum) that the face
+// opposite corner l of a grid tetrahedron lies on; -1 if none.
+template <typename GeomTraits, typename Tetrahedron>
+int grid_boundary_plane(const Tetrahedral_grid_3<GeomTraits>& grid, const Tetrahedron& tet, int l)
+{
+  const std::array<std::size_t, 3>& n = grid.vertex_counts();
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side)
+    {
+      bool on = true;
+      for(int c = 0; c < 4 && on; ++c)
+        if(c != l)
+        {
+          std::size_t v = tet[c];
+          const std::size_t i = v % n[0], j = (v / n[0]) % n[1], k = v / (n[0] * n[1]);
+          const std::size_t coordinate = axis == 0 ? i : (axis == 1 ? j : k);
+          on = coordinate == (side == 0 ? 0 : n[axis] - 1);
+        }
+      if(on)
+        return 2 * axis + side;
+    }
+  return -1;
+}
+
+// The boundary faces of a tetrahedral mesh (key 4 t + l: the face of
+// tetrahedron t opposite its corner l) grouped into planes: the maximal sets
+// of boundary faces connected across boundary edges and coplanar (exact
+// predicate on the input points).  Numbered in order of first face.
+template <typename GeomTraits>
+std::unordered_map<std::size_t, int> boundary_planes(const Tetrahedral_mesh_3<GeomTraits>& mesh)
+{
+  typedef Tetrahedral_mesh_3<GeomTraits> Mesh;
+  std::vector<std::size_t> faces;
+  for(std::size_t t = 0; t < mesh.number_of_tetrahedra(); ++t)
+    for(int l = 0; l < 4; ++l)
+      if(mesh.neighbor_apex(t, l) == Mesh::no_vertex)
+        faces.push_back(4 * t + std::size_t(l));
+  auto corners = [&](std::size_t f) {
+    const typename Mesh::Tetrahedron& tet = mesh.tetrahedron(f / 4);
+    std::array<std::size_t, 3> c;
+    int m = 0;
+    for(int k = 0; k < 4; ++k)
+      if(k != int(f % 4))
+        c[m++] = tet[k];
+    return c;
+  };
+  std::vector<std::size_t> parent(faces.size());
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    parent[i] = i;
+  auto find = [&](std::size_t i) {
+    while(parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  // Each boundary edge is shared by exactly two boundary faces of a conforming mesh
+  // (by more at a non-manifold boundary edge: all pairs are tried).
+  std::unordered_map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>,
+                     boost::hash<std::pair<std::size_t, std::size_t>>>
+      edge_faces;
+  for(std::size_t i = 0; i < faces.size(); ++i)
+  {
+    const std::array<std::size_t, 3> c = corners(faces[i]);
+    for(int k = 0; k < 3; ++k)
+      edge_faces[std::minmax(c[k], c[(k + 1) % 3])].push_back(i);
+  }
+  const typename GeomTraits::Coplanar_3 coplanar = GeomTraits().coplanar_3_object();
+  for(const auto& e : edge_faces)
+    for(std::size_t a = 0; a < e.second.size(); ++a)
+      for(std::size_t b = a + 1; b < e.second.size(); ++b)
+      {
+        const std::array<std::size_t, 3> p = corners(faces[e.second[a]]), q = corners(faces[e.second[b]]);
+        std::size_t apex = q[0];
+        for(std::size_t v : q)
+          if(v != e.first.first && v != e.first.second)
+            apex = v;
+        if(coplanar(mesh.point(p[0]), mesh.point(p[1]), mesh.point(p[2]), mesh.point(apex)))
+        {
+          const std::size_t x = find(e.second[a]), y = find(e.second[b]);
+          parent[(std::max)(x, y)] = (std::min)(x, y);
+        }
+      }
+  std::unordered_map<std::size_t, int> planes;
+  std::vector<int> number(faces.size(), -1);
+  int next = 0;
+  for(std::size_t i = 0; i < faces.size(); ++i)
+  {
+    const std::size_t r = find(i);
+    if(number[r] < 0)
+      number[r] = next++;
+    planes.emplace(faces[i], number[r]);
+  }
+  return planes;
+}
 
 // Evaluates the tetrahedra of cube layers [k_begin, k_end) of the grid into
 // `chunk`.  `values` holds the field values of the grid vertices from global
@@ -230,7 +291,10 @@ void extract_grid_slab(const Tetrahedral_grid_3<GeomTraits>& grid, const double*
                 }
                 return a;
               },
-              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count, evaluator); });
+              [&](int label, const Evaluator::Vertex* v, std::size_t count, int face) {
+                chunk.add(label, v, count, evaluator,
+                          label == Evaluator::domain_boundary_label ? grid_boundary_plane(grid, tet, face) : -1);
+              });
         }
       }
   }
@@ -386,6 +450,9 @@ extract_boolean_isosurface(const Tetrahedral_mesh_3<GeomTraits>& mesh, const Sca
     internal::field_sign_masks(values + v * N, expression_fields, negative[v], positive[v]);
 
   const std::size_t T = mesh.number_of_tetrahedra();
+  // The planes of the boundary: closing faces of different planes meet at creases.
+  const std::unordered_map<std::size_t, int> boundary_planes =
+      close ? internal::boundary_planes(mesh) : std::unordered_map<std::size_t, int>();
   const std::size_t chunk_size = std::max<std::size_t>(4096, (T + 63) / 64);
   const std::size_t number_of_chunks = (T + chunk_size - 1) / chunk_size;
   std::vector<internal::Tbiso_chunk> chunks(number_of_chunks);
@@ -431,7 +498,11 @@ extract_boolean_isosurface(const Tetrahedral_mesh_3<GeomTraits>& mesh, const Sca
                 }
                 return a;
               },
-              [&](int label, const Evaluator::Vertex* v, std::size_t count) { chunk.add(label, v, count, evaluator); });
+              [&](int label, const Evaluator::Vertex* v, std::size_t count, int face) {
+                chunk.add(label, v, count, evaluator,
+                          label == Evaluator::domain_boundary_label ? boundary_planes.at(4 * t + std::size_t(face))
+                                                                    : -1);
+              });
         }
       },
       internal::Progress(progress_callback));

@@ -192,7 +192,6 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   };
   std::unordered_map<internal::Tbiso_vertex_key, std::size_t, internal::Tbiso_vertex_key_hash> below, above;
   std::size_t next_index = 0;
-  std::vector<std::size_t> to_global, polygon;
   auto weld = [&](Slot& slot) {
     const auto weld_start = std::chrono::steady_clock::now();
     const std::size_t s = slot.slab;
@@ -201,32 +200,23 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
     stats.number_of_evaluated_tetrahedra += chunk.evaluated;
     chunk.index.clear();
     above.clear();
-    to_global.resize(chunk.keys.size());
-    for(std::size_t v = 0; v < chunk.keys.size(); ++v)
-    {
-      const std::size_t z = internal::shared_layer(chunk.keys[v], layer_size, slab);
-      if(z == k_begin && s > 0)
-      {
-        auto found = below.find(chunk.keys[v]);
-        if(found != below.end())
-        {
-          to_global[v] = found->second;
-          continue;
-        }
-      }
-      to_global[v] = next_index++;
-      sink.add_point(chunk.points[v]);
-      if(z == k_end)
-        above.emplace(chunk.keys[v], to_global[v]);
-    }
-    for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
-    {
-      polygon.clear();
-      for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
-        polygon.push_back(to_global[chunk.polygon_vertices[k]]);
-      sink.add_polygon(polygon.data(), polygon.size(), chunk.labels[p]);
-      ++stats.number_of_polygons;
-    }
+    internal::weld_chunk(
+        chunk,
+        [&](const internal::Tbiso_vertex_key& key) {
+          if(s == 0 || internal::shared_layer(key, layer_size, slab) != k_begin)
+            return internal::tbiso_no_index();
+          const auto found = below.find(key);
+          return found == below.end() ? internal::tbiso_no_index() : found->second;
+        },
+        [&](const internal::Tbiso_vertex_key& key, std::size_t index) {
+          if(internal::shared_layer(key, layer_size, slab) == k_end)
+            above.emplace(key, index);
+        },
+        next_index, [&](const std::array<double, 3>& p) { sink.add_point(p); },
+        [&](const std::size_t* v, std::size_t count, int label, int) {
+          sink.add_polygon(v, count, label);
+          ++stats.number_of_polygons;
+        });
     below.swap(above);
     chunk = internal::Tbiso_chunk();
     stats.welding_seconds += internal::seconds_since(weld_start);

@@ -132,8 +132,9 @@ struct Boolean_isosurface_mesh_maps
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   /// `"f:field"`: the soup's `face_fields` label of every face.
   typename Mesh::template Property_map<typename Mesh::Face_index, int> face_field;
-  /// `"e:crease"`: true iff the two faces of the edge have different labels
-  /// (the crease edges of `extract_crease_network()`); border edges are false.
+  /// `"e:crease"`: the edges of the polylines of `extract_crease_network()`
+  /// (faces of different labels, or closing faces of different planes of the
+  /// domain boundary); border edges are false.
   typename Mesh::template Property_map<typename Mesh::Edge_index, bool> edge_is_crease;
   /// `"v:corner"`: true for the corners of the crease network.
   typename Mesh::template Property_map<typename Mesh::Vertex_index, bool> vertex_is_corner;
@@ -175,12 +176,19 @@ boolean_isosurface_to_mesh(const Boolean_isosurface_soup<Point_3>& soup, const C
   // The mesh was built from scratch: face p is polygon p, vertex i is point i.
   for(std::size_t p = 0; p < soup.polygons.size(); ++p)
     maps.face_field[Face_index(typename Mesh::size_type(p))] = soup.face_fields[p];
-  for(const Edge_index e : mesh.edges())
-  {
-    const auto h = mesh.halfedge(e);
-    const Face_index f = mesh.face(h), g = mesh.face(mesh.opposite(h));
-    maps.edge_is_crease[e] = f != Mesh::null_face() && g != Mesh::null_face() && maps.face_field[f] != maps.face_field[g];
-  }
+  // The edges of the crease polylines: faces of different labels, and
+  // closing faces of different planes of the domain boundary.
+  for(const std::vector<std::size_t>& line : creases.polylines)
+    for(std::size_t k = 0; k + 1 < line.size(); ++k)
+    {
+      const auto h = mesh.halfedge(Vertex_index(typename Mesh::size_type(line[k])),
+                                   Vertex_index(typename Mesh::size_type(line[k + 1])));
+      if(h == Mesh::null_halfedge())
+        throw Invalid_input_error("crease edge (" + std::to_string(line[k]) + ", " + std::to_string(line[k + 1]) +
+                                  ") is not an edge of the soup");
+      if(!mesh.is_border(mesh.edge(h)))
+        maps.edge_is_crease[mesh.edge(h)] = true;
+    }
   for(std::size_t c : creases.corners)
     maps.vertex_is_corner[Vertex_index(typename Mesh::size_type(c))] = true;
   return maps;

@@ -18,7 +18,10 @@ namespace Boolean_isosurfacing {
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// The crease network of a labelled polygon soup: an edge is a crease when
 /// the polygons around it carry different labels (faces of different fields
-/// meet there; the domain boundary counts as a label).  Corners are crease
+/// meet there; the domain boundary counts as a label, and so does each plane
+/// of it when the soup has `face_boundary_planes`: the closing faces on two
+/// faces of a grid's box meet at a crease along the box's edge, and three at a
+/// corner of the box).  Corners are crease
 /// vertices whose number of crease edges is not 2 (ends and branchings) or
 /// around which three or more labels meet.  The crease edges are chained
 /// into polylines from corner to corner; a closed crease without a corner
@@ -34,6 +37,15 @@ Crease_network extract_crease_network(const Boolean_isosurface_soup<Point_3>& so
     int label;
   };
   std::vector<Edge_use> uses;
+  // Closing faces: one label per plane of the domain boundary, below all
+  // field labels and the plain domain_boundary label.
+  const bool has_planes = soup.face_boundary_planes.size() == soup.polygons.size();
+  auto label = [&](std::size_t p) {
+    const int field = soup.face_fields[p];
+    if(field != Boolean_isosurface_soup<Point_3>::domain_boundary || !has_planes || soup.face_boundary_planes[p] < 0)
+      return field;
+    return Boolean_isosurface_soup<Point_3>::domain_boundary - 1 - soup.face_boundary_planes[p];
+  };
   for(std::size_t p = 0; p < soup.polygons.size(); ++p)
   {
     const std::vector<std::size_t>& poly = soup.polygons[p];
@@ -42,7 +54,7 @@ Crease_network extract_crease_network(const Boolean_isosurface_soup<Point_3>& so
       std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
       if(b < a)
         std::swap(a, b);
-      uses.push_back(Edge_use{a, b, soup.face_fields[p]});
+      uses.push_back(Edge_use{a, b, label(p)});
     }
   }
   std::sort(uses.begin(), uses.end(), [](const Edge_use& x, const Edge_use& y) {

@@ -139,6 +139,9 @@ public:
       m_terms.push_back(Sign_term{t.pos, t.neg}); // `pos` = inside = f < 0
   }
 
+  /// The label of the faces that close the set on the domain boundary.
+  static constexpr int domain_boundary_label = -1;
+
   /// The fields the expression depends on: the only ones that cut, weld or label.
   std::uint64_t expression_fields() const { return m_fields; }
 
@@ -197,8 +200,9 @@ public:
   }
 
   /// Evaluates one positively oriented tetrahedron.  `apex(l)` gives the
-  /// neighbour across the face opposite corner `l`; `emit(label, vertices, n)`
-  /// receives each output polygon, oriented outward from the Boolean set.
+  /// neighbour across the face opposite corner `l`; `emit(label, vertices, n, face)`
+  /// receives each output polygon, oriented outward from the Boolean set, with
+  /// the face `l` of the tetrahedron it lies on (-1 inside the tetrahedron).
   template <typename ApexFunction, typename EmitFunction>
   void evaluate_tetrahedron(const std::array<Tbiso_corner, 4>& corner, const ApexFunction& apex,
                             const EmitFunction& emit)
@@ -724,13 +728,13 @@ private:
   static std::size_t no_id() { return (std::numeric_limits<std::size_t>::max)(); }
 
   template <typename EmitFunction>
-  void emit_polygon(const Polygon& poly, bool reverse, int label, const EmitFunction& emit)
+  void emit_polygon(const Polygon& poly, bool reverse, int label, int face, const EmitFunction& emit)
   {
     const std::size_t n = poly.vertices.size();
     m_out.resize(n);
     for(std::size_t k = 0; k < n; ++k)
       m_out[reverse ? n - 1 - k : k] = make_vertex(poly.vertices[k]);
-    emit(label, m_out.data(), n);
+    emit(label, m_out.data(), n, face);
   }
 
   // (a) faces on the zero plane of field i, which changes sign in the tetrahedron.
@@ -791,7 +795,7 @@ private:
       if(below == above)
         continue;
       // The polygon's normal points to f_i > 0; it must point out of the set.
-      emit_polygon(piece, /*reverse=*/above, i, emit);
+      emit_polygon(piece, /*reverse=*/above, i, -1, emit);
     }
   }
 
@@ -854,7 +858,7 @@ private:
     for(std::uint64_t m = mixed; m != 0; m &= m - 1)
       cut(m_pieces, l, lowest_bit(m));
 
-    int label = -1;
+    int label = domain_boundary_label;
     if(apex.exists)
       label = lowest_bit((inner_negative ^ outer_negative) | (inner_positive ^ outer_positive));
     for(const Polygon& piece : m_pieces)
@@ -864,7 +868,27 @@ private:
         continue;
       if(apex.exists && evaluate(negative | outer_negative, positive | outer_positive))
         continue;
-      emit_polygon(piece, false, label, emit);
+      int piece_label = label;
+      if(!apex.exists)
+      {
+        // A face on the domain boundary on which a field vanishes identically
+        // lies on that field's zero set.  If the field bounds the set there
+        // (with its sign reversed on the inner side the expression is false),
+        // the face is that field's, not a closing face: the lowest such field.
+        // (The bunny inside its convex hull: f0, the distance to the bunny,
+        // vanishes on the hull faces where the bunny touches its hull.)
+        const std::uint64_t in_negative = negative | inner_negative, in_positive = positive | inner_positive;
+        for(std::uint64_t m = inner_negative | inner_positive; m != 0; m &= m - 1)
+        {
+          const std::uint64_t bit = m & (~m + 1);
+          if(!evaluate((in_negative & ~bit) | (in_positive & bit), (in_positive & ~bit) | (in_negative & bit)))
+          {
+            piece_label = lowest_bit(bit);
+            break;
+          }
+        }
+      }
+      emit_polygon(piece, false, piece_label, l, emit);
     }
   }
 
