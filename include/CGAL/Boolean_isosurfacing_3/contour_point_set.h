@@ -38,6 +38,7 @@
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Iterator_range.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -347,10 +348,23 @@ std::pair<std::size_t, std::size_t> close_small_holes(PointOutRange& points, Tri
   PMP::polygon_soup_to_polygon_mesh(soup_points, soup, mesh);
   std::vector<typename Mesh::Halfedge_index> cycles;
   PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  // A loop is a hole of a surface only if its component is larger than the
+  // loop limit: a small open piece (one cube's triangles) bounded by the loop
+  // would become a doubled patch.
+  auto component = mesh.template add_property_map<typename Mesh::Face_index, std::size_t>("f:biso_cc", 0).first;
+  const std::size_t number_of_components = PMP::connected_components(mesh, component);
+  std::vector<Bbox_3> component_box(number_of_components);
+  for(const auto f : mesh.faces())
+    for(const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      component_box[component[f]] += mesh.point(v).bbox();
   std::size_t filled = 0;
   for(const auto h : cycles)
   {
     if(!mesh.is_border(h))
+      continue;
+    const Bbox_3& piece = component_box[component[mesh.face(mesh.opposite(h))]];
+    if(CGAL::square(piece.xmax() - piece.xmin()) + CGAL::square(piece.ymax() - piece.ymin()) +
+         CGAL::square(piece.zmax() - piece.zmin()) <= max_hole_diagonal * max_hole_diagonal)
       continue;
     Bbox_3 box;
     for(const auto g : CGAL::halfedges_around_face(h, mesh))
@@ -365,6 +379,7 @@ std::pair<std::size_t, std::size_t> close_small_holes(PointOutRange& points, Tri
   // Back to the soup: vertex order is kept (the hole filling adds no vertex).
   std::vector<Point_3> new_points;
   std::vector<std::array<std::size_t, 3>> new_soup;
+  mesh.remove_property_map(component);
   PMP::polygon_mesh_to_polygon_soup(mesh, new_points, new_soup);
   points.erase(points.begin() + std::ptrdiff_t(first_vertex), points.end());
   for(const Point_3& p : new_points)
@@ -773,10 +788,12 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
     next_vertex = out_points.size();
     report.number_of_triangles = out_triangles.size() - first_triangle;
   }
-  // Holes: a skipped cube (undefined corner, jump of f, lattice border)
+  // Holes: a skipped cube (undefined corner, jump of f)
   // leaves a hole in an otherwise closed surface.  Without one the soup is a
   // closed 2-manifold by construction, and nothing is done.
-  if(report.skipped_cubes + report.discontinuous_cubes + report.border_exits > 0 &&
+  // (Lattice-border exits are not repaired: the default margin prevents them,
+  // and a lattice cut short by lattice_margin is open there on purpose.)
+  if(report.skipped_cubes + report.discontinuous_cubes > 0 &&
      out_triangles.size() > first_triangle)
   {
     const double hole_size = choose_parameter(get_parameter(np, internal_np::maximum_hole_size),
