@@ -290,6 +290,8 @@ int run(const Options& options)
               << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, " << report.discontinuous_cubes << " skipped for a jump of f, "
               << report.removed_closed_components << " closed pieces smaller than rho removed)\n";
     std::cout << "triangles: " << triangles.size() << ", vertices: " << out_points.size() << "\n";
+    if(report.empty_output) // an empty mesh is an error, not a result
+      throw BI::Empty_contour_error(report);
 
     if(!options.output.empty())
     {

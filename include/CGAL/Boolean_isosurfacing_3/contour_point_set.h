@@ -35,7 +35,15 @@
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Iterator_range.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/iterator.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -48,6 +56,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -75,9 +84,37 @@ struct Contouring_report
   std::size_t joined_faces = 0;                  ///< ... where the decider joined the inside
   std::size_t centre_vertices = 0;
   std::size_t removed_closed_components = 0;     ///< bubbles smaller than minimum_closed_component_size
+  std::size_t split_vertices = 0;                ///< vertices pinched between two holes, duplicated
+  std::size_t filled_holes = 0;                  ///< border loops smaller than maximum_hole_size, triangulated
+  std::size_t walk_seeds = 0;                    ///< crossed cubes reached by walking down |f| from a sample
   std::size_t number_of_vertices = 0, number_of_triangles = 0;
+  /// No triangle came out: f changes sign in no cube reached from the samples
+  /// (or only in skipped ones).  `contour_point_set` throws `Empty_contour_error`.
+  bool empty_output = false;
   double field_seconds = 0;                      ///< evaluating f at lattice points
   double contouring_seconds = 0;                 ///< traversal + triangles, without field time
+};
+
+/// Thrown by `contour_point_set` when the contour has no triangle: an empty
+/// mesh is never a silent success.  `report()` tells what the traversal saw.
+class Empty_contour_error : public std::runtime_error
+{
+public:
+  explicit Empty_contour_error(const Contouring_report& report)
+    : std::runtime_error(message(report)), m_report(report)
+  {}
+  const Contouring_report& report() const { return m_report; }
+
+private:
+  static std::string message(const Contouring_report& report)
+  {
+    return "the contour is empty: f changes sign in no usable lattice cube (cell " + std::to_string(report.cell_size) +
+           ", " + std::to_string(report.visited_cubes) + " cubes visited, " + std::to_string(report.skipped_cubes) +
+           " skipped for an undefined corner, " + std::to_string(report.discontinuous_cubes) +
+           " for a jump of f, " + std::to_string(report.removed_closed_components) +
+           " closed pieces smaller than rho removed)";
+  }
+  Contouring_report m_report;
 };
 
 namespace internal {
@@ -280,6 +317,80 @@ std::size_t remove_small_closed_components(PointOutRange& points, TriangleRange&
   return removed;
 }
 
+/// Repairs the holes that skipped cubes leave (issue 18), on the triangles
+/// appended from `first_triangle` on (vertices from `first_vertex` on):
+///  1. vertices pinched between two holes (two skipped cubes diagonal around
+///     a lattice edge) are split (PMP::orient_polygon_soup), so the soup is an
+///     oriented 2-manifold with border;
+///  2. each border loop whose bounding box has a diagonal of at most
+///     `max_hole_diagonal` is filled (PMP::triangulate_hole, no new vertex).
+/// Larger loops (the border of an open sample, an unsampled region wider
+/// than the hole limit) stay.  Returns (vertices split, holes filled).
+template <typename PointOutRange, typename TriangleRange>
+std::pair<std::size_t, std::size_t> close_small_holes(PointOutRange& points, TriangleRange& triangles,
+                                                      std::size_t first_vertex, std::size_t first_triangle,
+                                                      double max_hole_diagonal)
+{
+  typedef typename std::decay<decltype(points[0])>::type Point_3;
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<Point_3> soup_points(points.begin() + std::ptrdiff_t(first_vertex), points.end());
+  std::vector<std::array<std::size_t, 3>> soup;
+  soup.reserve(triangles.size() - first_triangle);
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+    soup.push_back({{std::size_t(triangles[t][0]) - first_vertex, std::size_t(triangles[t][1]) - first_vertex,
+                     std::size_t(triangles[t][2]) - first_vertex}});
+  const std::size_t before = soup_points.size();
+  if(!PMP::is_polygon_soup_a_polygon_mesh(soup))
+    PMP::orient_polygon_soup(soup_points, soup);
+  const std::size_t split = soup_points.size() - before;
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(soup_points, soup, mesh);
+  std::vector<typename Mesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  // A loop is a hole of a surface only if its component is larger than the
+  // loop limit: a small open piece (one cube's triangles) bounded by the loop
+  // would become a doubled patch.
+  auto component = mesh.template add_property_map<typename Mesh::Face_index, std::size_t>("f:biso_cc", 0).first;
+  const std::size_t number_of_components = PMP::connected_components(mesh, component);
+  std::vector<Bbox_3> component_box(number_of_components);
+  for(const auto f : mesh.faces())
+    for(const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      component_box[component[f]] += mesh.point(v).bbox();
+  std::size_t filled = 0;
+  for(const auto h : cycles)
+  {
+    if(!mesh.is_border(h))
+      continue;
+    const Bbox_3& piece = component_box[component[mesh.face(mesh.opposite(h))]];
+    if(CGAL::square(piece.xmax() - piece.xmin()) + CGAL::square(piece.ymax() - piece.ymin()) +
+         CGAL::square(piece.zmax() - piece.zmin()) <= max_hole_diagonal * max_hole_diagonal)
+      continue;
+    Bbox_3 box;
+    for(const auto g : CGAL::halfedges_around_face(h, mesh))
+      box += mesh.point(mesh.target(g)).bbox();
+    const double d2 = CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                      CGAL::square(box.zmax() - box.zmin());
+    if(!(d2 <= max_hole_diagonal * max_hole_diagonal))
+      continue;
+    PMP::triangulate_hole(mesh, h, CGAL::Emptyset_iterator());
+    ++filled;
+  }
+  // Back to the soup: vertex order is kept (the hole filling adds no vertex).
+  std::vector<Point_3> new_points;
+  std::vector<std::array<std::size_t, 3>> new_soup;
+  mesh.remove_property_map(component);
+  PMP::polygon_mesh_to_polygon_soup(mesh, new_points, new_soup);
+  points.erase(points.begin() + std::ptrdiff_t(first_vertex), points.end());
+  for(const Point_3& p : new_points)
+    points.push_back(p);
+  triangles.erase(triangles.begin() + std::ptrdiff_t(first_triangle), triangles.end());
+  for(const auto& t : new_soup)
+    triangles.push_back(typename TriangleRange::value_type{t[0] + first_vertex, t[1] + first_vertex,
+                                                           t[2] + first_vertex});
+  return {split, filled};
+}
+
 } // namespace internal
 
 /*!
@@ -432,69 +543,160 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
   };
 
   // ---- traversal: seeds, then flood through crossed faces ----------------
+  // A cube is "crossed" when its 8 corners are defined, not all of one sign,
+  // and f does not jump along a sign-changing edge.
+  enum class Cube_state { undefined, undefined_crossed, uncrossed, jump, crossed };
+  auto cube_state = [&](const std::array<std::int64_t, 3>& c, std::array<double, 8>& v) {
+    const bool defined = cube_values(c, v);
+    // Signs with undefined corners: only the defined ones can witness a crossing.
+    bool has_in = false, has_out = false;
+    for(int k = 0; k < 8; ++k)
+      if(!std::isnan(v[k]))
+        (v[k] < 0 ? has_in : has_out) = true;
+    if(!defined)
+      return (has_in && has_out) ? Cube_state::undefined_crossed : Cube_state::undefined;
+    const unsigned code = internal::inside_cube_code(v);
+    if(code == 0 || code == 0xFF)
+      return Cube_state::uncrossed;
+    return internal::has_jump_edge(v, code, max_jump) ? Cube_state::jump : Cube_state::crossed;
+  };
+  auto cube_of = [&](const std::array<double, 3>& p) {
+    std::array<std::int64_t, 3> c;
+    for(int a = 0; a < 3; ++a)
+      c[a] = (std::min)(cells[a] - 1, (std::max)(std::int64_t(0), std::int64_t(std::floor((p[a] - origin[a]) / r))));
+    return c;
+  };
   std::vector<std::uint64_t> stack;
   std::unordered_set<std::uint64_t> visited;
   visited.reserve(4 * samples.size());
-  for(const Point_3& p : samples)
+  std::vector<std::uint64_t> surface_cubes;
+  std::array<double, 8> values;
+  auto flood = [&]() {
+    while(!stack.empty())
+    {
+      const std::uint64_t key = stack.back();
+      stack.pop_back();
+      ++report.visited_cubes;
+      const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+      const Cube_state state = cube_state(c, values);
+      if(state == Cube_state::undefined_crossed)
+        ++report.skipped_cubes; // Hoppe: a cube with an undefined corner is skipped
+      else if(state == Cube_state::jump)
+        ++report.discontinuous_cubes; // a jump of f between two planes, not a surface
+      if(state != Cube_state::crossed)
+        continue;
+      const unsigned code = internal::inside_cube_code(values);
+      surface_cubes.push_back(key);
+      for(int f = 0; f < 6; ++f)
+      {
+        const std::array<int, 4> corners = cube_face_corners(f);
+        const bool first = is_inside_corner(code, corners[0]);
+        bool crossed = false;
+        for(int i = 1; i < 4; ++i)
+          crossed = crossed || (is_inside_corner(code, corners[i]) != first);
+        if(!crossed)
+          continue;
+        std::array<std::int64_t, 3> n = c;
+        n[cube_face_axis(f)] += cube_face_side(f) ? 1 : -1;
+        const int a = cube_face_axis(f);
+        if(n[a] < 0 || n[a] >= cells[a])
+        {
+          ++report.border_exits; // the default margin prevents this; it leaves a hole
+          continue;
+        }
+        const std::uint64_t neighbour = internal::lattice_key(n[0], n[1], n[2]);
+        if(visited.insert(neighbour).second)
+          stack.push_back(neighbour);
+      }
+    }
+  };
+  // Seeds, first pass: the cubes that hold a sample.  With a cell of about
+  // the sample spacing f changes sign in most of them.
+  std::vector<std::array<double, 3>> sample_xyz(samples.size());
+  for(std::size_t s = 0; s < samples.size(); ++s)
   {
-    std::array<std::int64_t, 3> c;
     for(int a = 0; a < 3; ++a)
-      c[a] = (std::min)(cells[a] - 1,
-                        (std::max)(std::int64_t(0), std::int64_t(std::floor((CGAL::to_double(p[a]) - origin[a]) / r))));
+      sample_xyz[s][a] = CGAL::to_double(samples[s][a]);
+    const std::array<std::int64_t, 3> c = cube_of(sample_xyz[s]);
     const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
     if(visited.insert(key).second)
       stack.push_back(key);
   }
   std::sort(stack.begin(), stack.end(), std::greater<std::uint64_t>()); // pop smallest first
-  std::vector<std::uint64_t> surface_cubes;
-  std::array<double, 8> values;
-  while(!stack.empty())
+  flood();
+  // Second pass, for cells finer than the offset of the zero set from the
+  // samples (noise, curvature: sphere.pwn's zero set lies 1.4e-3 inside its
+  // samples): from each sample whose cube f does not cross, walk down |f|
+  // (along the gradient of the cube's trilinear interpolant, which is the
+  // tangent plane's normal where the cube's corners share a plane) in steps
+  // of half a cell, to the first crossed cube, at most rho + delta away (the
+  // largest distance at which f is defined).  A walk ends at an undefined
+  // cube, a jump, or a cube already crossed (its piece is traversed).
+  std::unordered_set<std::uint64_t> crossed_cubes(surface_cubes.begin(), surface_cubes.end());
+  const double walk_length = field.sampling_density() + field.noise_level() + r;
+  const int max_steps = int((std::min)(std::ceil(walk_length / (0.5 * r)), 1e6));
+  for(std::size_t s = 0; s < samples.size(); ++s)
   {
-    const std::uint64_t key = stack.back();
-    stack.pop_back();
-    ++report.visited_cubes;
-    const std::array<std::int64_t, 3> c = internal::lattice_index(key);
-    const bool defined = cube_values(c, values);
-    // Signs with undefined corners: only the defined ones can witness a crossing.
-    bool has_in = false, has_out = false;
-    for(int k = 0; k < 8; ++k)
-      if(!std::isnan(values[k]))
-        (values[k] < 0 ? has_in : has_out) = true;
-    if(!defined)
-    {
-      if(has_in && has_out)
-        ++report.skipped_cubes;
-      continue; // Hoppe: a cube with an undefined corner is skipped
-    }
-    const unsigned code = internal::inside_cube_code(values);
-    if(code == 0 || code == 0xFF)
+    std::array<double, 3> q = sample_xyz[s];
+    std::array<std::int64_t, 3> c = cube_of(q);
+    if(crossed_cubes.count(internal::lattice_key(c[0], c[1], c[2])) != 0)
       continue;
-    if(internal::has_jump_edge(values, code, max_jump))
-    {
-      ++report.discontinuous_cubes; // a jump of f between two planes, not a surface
+    if(cube_state(c, values) != Cube_state::uncrossed) // undefined or a jump: nothing to follow
       continue;
-    }
-    surface_cubes.push_back(key);
-    for(int f = 0; f < 6; ++f)
+    for(int step = 0; step < max_steps; ++step)
     {
-      const std::array<int, 4> corners = cube_face_corners(f);
-      const bool first = is_inside_corner(code, corners[0]);
-      bool crossed = false;
-      for(int i = 1; i < 4; ++i)
-        crossed = crossed || (is_inside_corner(code, corners[i]) != first);
-      if(!crossed)
-        continue;
-      std::array<std::int64_t, 3> n = c;
-      n[cube_face_axis(f)] += cube_face_side(f) ? 1 : -1;
-      const int a = cube_face_axis(f);
-      if(n[a] < 0 || n[a] >= cells[a])
+      // The trilinear interpolant of the cube at q: value and gradient.
+      double u[3];
+      for(int a = 0; a < 3; ++a)
+        u[a] = (std::min)(1.0, (std::max)(0.0, (q[a] - origin[a]) / r - double(c[a])));
+      double value = 0, g[3] = {0, 0, 0};
+      for(int k = 0; k < 8; ++k)
       {
-        ++report.border_exits; // the default margin prevents this; it leaves a hole
-        continue;
+        double w[3], dw[3];
+        for(int a = 0; a < 3; ++a)
+        {
+          const bool upper = ((k >> a) & 1) != 0;
+          w[a] = upper ? u[a] : 1 - u[a];
+          dw[a] = upper ? 1.0 : -1.0;
+        }
+        value += values[k] * w[0] * w[1] * w[2];
+        g[0] += values[k] * dw[0] * w[1] * w[2];
+        g[1] += values[k] * w[0] * dw[1] * w[2];
+        g[2] += values[k] * w[0] * w[1] * dw[2];
       }
-      const std::uint64_t neighbour = internal::lattice_key(n[0], n[1], n[2]);
-      if(visited.insert(neighbour).second)
-        stack.push_back(neighbour);
+      const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      if(!(norm > 0) || !std::isfinite(norm))
+        break;
+      // Half a cell towards f = 0 (g is per cell, so g / norm is a unit direction).
+      const double length = (value < 0 ? 0.5 : -0.5) * r / norm;
+      bool outside = false;
+      for(int a = 0; a < 3; ++a)
+      {
+        q[a] += length * g[a];
+        outside = outside || !(q[a] >= origin[a] && q[a] < origin[a] + double(cells[a]) * r);
+      }
+      if(outside)
+        break;
+      const std::array<std::int64_t, 3> next = cube_of(q);
+      if(next == c)
+        continue;
+      c = next;
+      const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
+      const Cube_state state = cube_state(c, values);
+      if(state == Cube_state::crossed)
+      {
+        if(visited.insert(key).second)
+        {
+          const std::size_t before = surface_cubes.size();
+          stack.push_back(key);
+          ++report.walk_seeds;
+          flood();
+          crossed_cubes.insert(surface_cubes.begin() + std::ptrdiff_t(before), surface_cubes.end());
+        }
+        break;
+      }
+      if(state != Cube_state::uncrossed)
+        break;
     }
   }
 
@@ -586,7 +788,25 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
     next_vertex = out_points.size();
     report.number_of_triangles = out_triangles.size() - first_triangle;
   }
+  // Holes: a skipped cube (undefined corner, jump of f)
+  // leaves a hole in an otherwise closed surface.  Without one the soup is a
+  // closed 2-manifold by construction, and nothing is done.
+  // (Lattice-border exits are not repaired: the default margin prevents them,
+  // and a lattice cut short by lattice_margin is open there on purpose.)
+  if(report.skipped_cubes + report.discontinuous_cubes > 0 &&
+     out_triangles.size() > first_triangle)
+  {
+    const double hole_size = choose_parameter(get_parameter(np, internal_np::maximum_hole_size),
+                                              2 * field.sampling_density());
+    const auto repaired =
+      internal::close_small_holes(out_points, out_triangles, first_vertex, first_triangle, hole_size);
+    report.split_vertices = repaired.first;
+    report.filled_holes = repaired.second;
+    next_vertex = out_points.size();
+    report.number_of_triangles = out_triangles.size() - first_triangle;
+  }
   report.number_of_vertices = next_vertex - first_vertex;
+  report.empty_output = report.number_of_triangles == 0;
   report.field_seconds = field_seconds;
   report.contouring_seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count() - field_seconds;
@@ -601,6 +821,7 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
  * number_of_neighbors, sampling_density, noise_level, cell_size,
  * cells_along_longest_side, lattice_margin, geom_traits).
  * \returns the contouring report.
+ * \throws Empty_contour_error when no triangle comes out.
  */
 template <typename PointRange, typename PointOutRange, typename TriangleRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
@@ -610,7 +831,10 @@ Contouring_report contour_point_set(const PointRange& points, PointOutRange& out
 {
   typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
   const Tangent_plane_signed_distance_3<Geom_traits> field(points, np);
-  return contour_signed_distance(field, out_points, out_triangles, np);
+  const Contouring_report report = contour_signed_distance(field, out_points, out_triangles, np);
+  if(report.empty_output)
+    throw Empty_contour_error(report);
+  return report;
 }
 
 /*!

@@ -33,6 +33,7 @@
   X(number_of_neighbors_t, number_of_neighbors)       \
   X(maximum_jump_t, maximum_jump)                     \
   X(minimum_closed_component_size_t, minimum_closed_component_size) \
+  X(maximum_hole_size_t, maximum_hole_size)           \
   X(close_at_domain_boundary_t, close_at_domain_boundary) \
   X(slab_layers_t, slab_layers)
 
