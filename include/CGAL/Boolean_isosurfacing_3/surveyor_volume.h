@@ -7,6 +7,8 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/Triangle_soup_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Huge_pages.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tetrahedra_sum.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
@@ -133,7 +135,10 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
       ++first[std::min(t[i], t[(i + 1) % 3]) + 1];
   for(std::size_t v = 0; v < number_of_points; ++v)
     first[v + 1] += first[v];
-  std::vector<std::uint64_t> entries(first.back());
+  // Every entry is written below: no zero-filling of 3n words first.
+  std::vector<std::uint64_t, Default_init_allocator<std::uint64_t>> entries;
+  reserve_in_huge_pages(entries, first.back());
+  entries.resize(first.back());
   std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
   for(const TriangleIndices& t : triangles)
     for(int i = 0; i < 3; ++i)
@@ -146,7 +151,16 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
   for(std::size_t low = 0; low < number_of_points; ++low)
   {
     const auto begin = entries.begin() + first[low], end = entries.begin() + first[low + 1];
-    std::sort(begin, end);
+    if(end - begin <= 16)
+      for(auto i = begin + 1; i < end; ++i) // insertion sort: buckets hold ~6 entries
+      {
+        const std::uint64_t v = *i;
+        auto j = i;
+        for(; j != begin && *(j - 1) > v; --j) *j = *(j - 1);
+        *j = v;
+      }
+    else
+      std::sort(begin, end);
     for(auto run = begin; run != end;)
     {
       const std::uint64_t high = *run >> 1;

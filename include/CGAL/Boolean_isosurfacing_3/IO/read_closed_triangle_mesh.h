@@ -35,7 +35,7 @@ void triangle_soup_to_mesh(const Triangle_soup_3& soup, MutableFaceGraph& mesh)
 {
   typedef typename boost::property_map<MutableFaceGraph, CGAL::vertex_point_t>::type Vertex_point_map;
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
-  internal::check_manifold_vertices(soup.triangles, soup.points.size());
+  CGAL::Boolean_isosurfacing::internal::check_manifold_vertices(soup.triangles, soup.points.size());
   std::vector<Point_3> points;
   points.reserve(soup.points.size());
   for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);

@@ -30,7 +30,7 @@ enum class Mesh_file_format { OFF, OBJ, PLY, STL, from_content };
 /// `from_content` for any other extension.
 inline Mesh_file_format mesh_file_format_of(const std::string& path)
 {
-  using internal::ends_with_lowercase;
+  using CGAL::Boolean_isosurfacing::internal::ends_with_lowercase;
   if(ends_with_lowercase(path, ".off")) return Mesh_file_format::OFF;
   if(ends_with_lowercase(path, ".obj")) return Mesh_file_format::OBJ;
   if(ends_with_lowercase(path, ".ply")) return Mesh_file_format::PLY;
@@ -45,19 +45,24 @@ inline Mesh_file_format sniff_format(const char* begin, const char* end)
   const std::size_t n = std::size_t(end - begin);
   if(n >= 4 && std::memcmp(begin, "ply", 3) == 0 && (begin[3] == '\n' || begin[3] == '\r'))
     return Mesh_file_format::PLY;
-  internal::Text_cursor in(begin, end);
+  CGAL::Boolean_isosurfacing::internal::Text_cursor in(begin, end);
   in.skip_spaces_and_comments('#');
-  if(internal::read_OFF_keyword(in))
+  if(CGAL::Boolean_isosurfacing::internal::read_OFF_keyword(in))
     return Mesh_file_format::OFF;
-  if(std::size_t(end - in.p) >= 6 && std::memcmp(in.p, "solid", 5) == 0 && internal::is_space(in.p[5]))
+  if(std::size_t(end - in.p) >= 6 && std::memcmp(in.p, "solid", 5) == 0 && CGAL::Boolean_isosurfacing::internal::is_text_space(in.p[5]))
     return Mesh_file_format::STL;
-  if(std::size_t(end - in.p) >= 2 && in.p[0] == 'v' && internal::is_blank(in.p[1]))
-    return Mesh_file_format::OBJ;
+  // OBJ: the first statement (after comments) is one of the usual ones.
+  const char* word = in.p;
+  while(in.p < end && !CGAL::Boolean_isosurfacing::internal::is_text_space(*in.p)) ++in.p;
+  const std::string first(word, in.p);
+  for(const char* statement : {"v", "vn", "vt", "f", "o", "g", "s", "mtllib", "usemtl"})
+    if(first == statement)
+      return Mesh_file_format::OBJ;
   throw Invalid_input_error("cannot parse it as OFF, OBJ, PLY or STL: the extension names none of them and "
                             "the content starts like none of them");
 }
 
-inline void read_triangle_soup(const internal::Input_buffer& buffer, Mesh_file_format format,
+inline void read_triangle_soup(const CGAL::Boolean_isosurfacing::internal::Input_buffer& buffer, Mesh_file_format format,
                                Triangle_soup_3& soup)
 {
   soup = Triangle_soup_3();
@@ -65,10 +70,10 @@ inline void read_triangle_soup(const internal::Input_buffer& buffer, Mesh_file_f
     format = sniff_format(buffer.begin(), buffer.end());
   switch(format)
   {
-  case Mesh_file_format::OFF: internal::read_OFF(buffer.begin(), buffer.end(), soup); break;
-  case Mesh_file_format::OBJ: internal::read_OBJ(buffer.begin(), buffer.end(), soup); break;
-  case Mesh_file_format::PLY: internal::read_PLY(buffer.begin(), buffer.end(), soup); break;
-  default: internal::read_STL(buffer.begin(), buffer.end(), soup); break;
+  case Mesh_file_format::OFF: CGAL::Boolean_isosurfacing::internal::read_OFF(buffer.begin(), buffer.end(), soup); break;
+  case Mesh_file_format::OBJ: CGAL::Boolean_isosurfacing::internal::read_OBJ(buffer.begin(), buffer.end(), soup); break;
+  case Mesh_file_format::PLY: CGAL::Boolean_isosurfacing::internal::read_PLY(buffer.begin(), buffer.end(), soup); break;
+  default: CGAL::Boolean_isosurfacing::internal::read_STL(buffer.begin(), buffer.end(), soup); break;
   }
 }
 
@@ -82,7 +87,7 @@ inline void read_triangle_soup(const internal::Input_buffer& buffer, Mesh_file_f
  */
 inline void read_triangle_soup(const char* data, std::size_t size, Mesh_file_format format, Triangle_soup_3& soup)
 {
-  internal_io::read_triangle_soup(internal::Input_buffer(data, size), format, soup);
+  internal_io::read_triangle_soup(CGAL::Boolean_isosurfacing::internal::Input_buffer(data, size), format, soup);
 }
 
 /*!
@@ -113,7 +118,7 @@ inline void read_triangle_soup(const char* data, std::size_t size, Mesh_file_for
 inline Triangle_soup_3 read_triangle_soup(const std::string& path)
 {
   Triangle_soup_3 soup;
-  internal_io::read_triangle_soup(internal::read_whole_file(path), mesh_file_format_of(path), soup);
+  internal_io::read_triangle_soup(CGAL::Boolean_isosurfacing::internal::read_whole_file(path), mesh_file_format_of(path), soup);
   return soup;
 }
 

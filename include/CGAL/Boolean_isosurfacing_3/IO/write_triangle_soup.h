@@ -70,7 +70,7 @@ inline std::string triangle_soup_to_binary_PLY(const Triangle_soup_3& soup)
   char* p = &out[0];
   std::memcpy(p, header.data(), header.size());
   p += header.size();
-  const bool little = internal::host_is_little_endian();
+  const bool little = CGAL::Boolean_isosurfacing::internal::host_is_little_endian();
   if(little)
   {
     std::memcpy(p, soup.points.data(), 24 * soup.points.size());
@@ -81,7 +81,7 @@ inline std::string triangle_soup_to_binary_PLY(const Triangle_soup_3& soup)
       for(double c : q)
       {
         std::string b;
-        internal::put_little_endian(b, c);
+        CGAL::Boolean_isosurfacing::internal::put_little_endian(b, c);
         std::memcpy(p, b.data(), 8);
         p += 8;
       }
@@ -90,7 +90,7 @@ inline std::string triangle_soup_to_binary_PLY(const Triangle_soup_3& soup)
     *p++ = 3;
     std::uint32_t v[3] = {t[0], t[1], t[2]};
     if(!little)
-      internal::little_endian_to_host(v, 3); // the same byte reversal
+      CGAL::Boolean_isosurfacing::internal::little_endian_to_host(v, 3); // the same byte reversal
     std::memcpy(p, v, 12);
     p += 12;
   }
@@ -140,9 +140,9 @@ inline std::string triangle_soup_to_OFF(const Triangle_soup_3& soup)
  */
 inline void write_triangle_soup(const std::string& path, const Triangle_soup_3& soup)
 {
-  if(internal::ends_with_lowercase(path, ".ply"))
+  if(CGAL::Boolean_isosurfacing::internal::ends_with_lowercase(path, ".ply"))
     internal_io::write_whole_file(path, triangle_soup_to_binary_PLY(soup));
-  else if(internal::ends_with_lowercase(path, ".off"))
+  else if(CGAL::Boolean_isosurfacing::internal::ends_with_lowercase(path, ".off"))
     internal_io::write_whole_file(path, triangle_soup_to_OFF(soup));
   else
     throw std::invalid_argument("write_triangle_soup: " + path + ": the extension must be .ply or .off");

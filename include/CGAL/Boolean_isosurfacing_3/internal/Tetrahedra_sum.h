@@ -78,6 +78,24 @@ public:
       flush();
   }
 
+  // A full batch of triangles given as indices into flat points (only
+  // when no partial batch is pending).
+  template <typename Point, typename Triangle>
+  void add_batch(const Point* points, const Triangle* triangles)
+  {
+    for(std::size_t k = 0; k < batch; ++k)
+    {
+      const auto& a = points[triangles[k][0]];
+      const auto& b = points[triangles[k][1]];
+      const auto& c = points[triangles[k][2]];
+      m_x1[k] = a[0]; m_y1[k] = a[1]; m_z1[k] = a[2];
+      m_x2[k] = b[0]; m_y2[k] = b[1]; m_z2[k] = b[2];
+      m_x3[k] = c[0]; m_y3[k] = c[1]; m_z3[k] = c[2];
+    }
+    m_fill = batch;
+    flush();
+  }
+
   // The compensated sum, the sum of the permanents and the term count.
   void finish(double& sum, double& permanents, std::size_t& count)
   {
@@ -113,10 +131,11 @@ private:
       const double ax = m_x2[k] - m_x1[k], ay = m_y2[k] - m_y1[k], az = m_z2[k] - m_z1[k];
       const double bx = m_x3[k] - m_x1[k], by = m_y3[k] - m_y1[k], bz = m_z3[k] - m_z1[k];
       const double dx = m_x1[k] - m_cx, dy = m_y1[k] - m_cy, dz = m_z1[k] - m_cz;
-      term[k] = (ay * bz - az * by) * dx + (az * bx - ax * bz) * dy + (ax * by - ay * bx) * dz;
-      permanent[k] = (std::abs(ay) * std::abs(bz) + std::abs(az) * std::abs(by)) * std::abs(dx) +
-                     (std::abs(az) * std::abs(bx) + std::abs(ax) * std::abs(bz)) * std::abs(dy) +
-                     (std::abs(ax) * std::abs(by) + std::abs(ay) * std::abs(bx)) * std::abs(dz);
+      // |u| * |v| == |u * v| exactly, so the permanent reuses the products.
+      const double p1 = ay * bz, p2 = az * by, p3 = az * bx, p4 = ax * bz, p5 = ax * by, p6 = ay * bx;
+      term[k] = (p1 - p2) * dx + (p3 - p4) * dy + (p5 - p6) * dz;
+      permanent[k] = (std::abs(p1) + std::abs(p2)) * std::abs(dx) + (std::abs(p3) + std::abs(p4)) * std::abs(dy) +
+                     (std::abs(p5) + std::abs(p6)) * std::abs(dz);
     }
     for(std::size_t k = 0; k < batch; k += lanes)
       for(std::size_t l = 0; l < lanes; ++l)
@@ -206,11 +225,16 @@ double sum_of_signed_tetrahedra_of_arrays(const PointArray& points, const Triang
 {
   auto batches = std::make_unique<Tetrahedra_batch_sum>(cx, cy, cz);
   const auto* p = points.data();
-  for(const auto& t : triangles)
+  const auto* t = triangles.data();
+  const std::size_t n_triangles = triangles.size(), batch = Tetrahedra_batch_sum::batch;
+  std::size_t i = 0;
+  for(; i + batch <= n_triangles; i += batch)
+    batches->add_batch(p, t + i); // the whole batch in one call: no per-triangle bookkeeping
+  for(; i < n_triangles; ++i)
   {
-    const auto& a = p[t[0]];
-    const auto& b = p[t[1]];
-    const auto& c = p[t[2]];
+    const auto& a = p[t[i][0]];
+    const auto& b = p[t[i][1]];
+    const auto& c = p[t[i][2]];
     batches->add(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]);
   }
   double s, permanents;

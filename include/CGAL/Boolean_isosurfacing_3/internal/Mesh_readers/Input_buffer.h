@@ -168,9 +168,9 @@ inline std::string describe_non_finite(double x, double y, double z)
   return out.str();
 }
 
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-inline bool is_space(char c) { return is_blank(c) || c == '\n'; }
-inline bool is_digit(char c) { return unsigned(c - '0') < 10u; }
+inline bool is_text_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+inline bool is_text_space(char c) { return is_text_blank(c) || c == '\n'; }
+inline bool is_text_digit(char c) { return unsigned(c - '0') < 10u; }
 
 // A cursor over the text of a buffer.  Every `parse_*` skips blanks (not
 // newlines) first and returns false, without moving, on a malformed token.
@@ -196,7 +196,7 @@ struct Text_cursor
   std::string found() const
   {
     const char* q = p;
-    while(q < end && is_blank(*q)) ++q;
+    while(q < end && is_text_blank(*q)) ++q;
     if(q >= end) return "the end of the file";
     if(*q == '\n') return "the end of the line";
     return "'" + printable_excerpt(q, end) + "'";
@@ -205,11 +205,11 @@ struct Text_cursor
   bool at_end() const { return p >= end; }
   void skip_blanks()
   {
-    while(p < end && is_blank(*p)) ++p;
+    while(p < end && is_text_blank(*p)) ++p;
   }
   void skip_spaces()
   {
-    while(p < end && is_space(*p)) ++p;
+    while(p < end && is_text_space(*p)) ++p;
   }
   // Skips whitespace, newlines and comments that start with `comment`.
   void skip_spaces_and_comments(char comment)
@@ -245,9 +245,9 @@ struct Text_cursor
     // fast_float parses "nan", "inf" and "infinity" too: the caller names
     // them in its error instead of "cannot parse".
     const auto r = fast_float::from_chars(q, end, value);
-    if(r.ec != std::errc() || (r.ptr < end && !is_space(*r.ptr) && *r.ptr != '#'))
+    if(r.ec != std::errc() || (r.ptr < end && !is_text_space(*r.ptr) && *r.ptr != '#'))
     {
-      if(r.ec == std::errc::result_out_of_range && (r.ptr >= end || is_space(*r.ptr)))
+      if(r.ec == std::errc::result_out_of_range && (r.ptr >= end || is_text_space(*r.ptr)))
       { // beyond the double range: report it as the infinity it rounds to
         value = (*q == '-') ? -HUGE_VAL : HUGE_VAL;
         p = r.ptr;
@@ -266,10 +266,10 @@ struct Text_cursor
     const char* q = p;
     if(q < end && *q == '+')
       ++q;
-    if(q >= end || !is_digit(*q))
+    if(q >= end || !is_text_digit(*q))
       return false;
     std::uint64_t v = 0;
-    for(; q < end && is_digit(*q); ++q)
+    for(; q < end && is_text_digit(*q); ++q)
     {
       if(v > (std::uint64_t(1) << 59))
         return false; // far beyond any count or index this reader accepts
@@ -284,7 +284,7 @@ struct Text_cursor
   {
     skip_blanks();
     const bool negative = p < end && *p == '-';
-    if(negative && !(p + 1 < end && is_digit(p[1])))
+    if(negative && !(p + 1 < end && is_text_digit(p[1])))
       return false;
     const char* start = p;
     if(negative)
@@ -304,7 +304,7 @@ struct Text_cursor
   {
     skip_spaces();
     const std::size_t n = std::strlen(word);
-    if(std::size_t(end - p) >= n && std::memcmp(p, word, n) == 0 && (p + n == end || is_space(p[n])))
+    if(std::size_t(end - p) >= n && std::memcmp(p, word, n) == 0 && (p + n == end || is_text_space(p[n])))
     {
       p += n;
       return true;

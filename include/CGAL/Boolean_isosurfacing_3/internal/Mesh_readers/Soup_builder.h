@@ -9,6 +9,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/IO/Triangle_soup_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Huge_pages.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -21,7 +22,7 @@ namespace internal {
 // Appends the polygon v[0..k) (k >= 3, indices already checked) as a fan of
 // triangles from v[0]: exact for convex polygons, which is what the formats'
 // writers produce for quads and n-gons.
-inline void add_polygon(Triangle_soup_3& soup, const std::uint32_t* v, std::size_t k)
+inline void add_fan_of_triangles(Triangle_soup_3& soup, const std::uint32_t* v, std::size_t k)
 {
   if(k == 3)
   {

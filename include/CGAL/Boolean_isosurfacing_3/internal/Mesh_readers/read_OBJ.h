@@ -30,8 +30,8 @@ inline void read_OBJ(const char* begin, const char* end, Triangle_soup_3& soup)
   soup.triangles.clear();
   // No counts in OBJ: a guess from the size (a vertex line is ~30 bytes, a
   // face line ~20, about twice as many faces) saves most regrowth.
-  soup.points.reserve(std::size_t(end - begin) / 80);
-  soup.triangles.reserve(std::size_t(end - begin) / 40);
+  reserve_in_huge_pages(soup.points, std::size_t(end - begin) / 80);
+  reserve_in_huge_pages(soup.triangles, std::size_t(end - begin) / 40);
   std::vector<std::uint32_t> polygon;
   std::size_t face_number = 0;
   while(true)
@@ -40,7 +40,7 @@ inline void read_OBJ(const char* begin, const char* end, Triangle_soup_3& soup)
     if(in.at_end())
       break;
     const char c0 = in.p[0], c1 = in.p[1];
-    if(c0 == 'v' && is_blank(c1))
+    if(c0 == 'v' && is_text_blank(c1))
     {
       const char* line = in.p;
       in.p += 2;
@@ -57,7 +57,7 @@ inline void read_OBJ(const char* begin, const char* end, Triangle_soup_3& soup)
       soup.points.push_back({c[0], c[1], c[2]});
       in.skip_line();
     }
-    else if(c0 == 'f' && is_blank(c1))
+    else if(c0 == 'f' && is_text_blank(c1))
     {
       in.p += 2;
       polygon.clear();
@@ -74,15 +74,15 @@ inline void read_OBJ(const char* begin, const char* end, Triangle_soup_3& soup)
                   ", but " + std::to_string(n) + " vertices are defined before it");
         polygon.push_back(std::uint32_t(v));
         // texture and normal indices: i/t, i/t/n, i//n
-        while(in.p < in.end && (*in.p == '/' || *in.p == '-' || is_digit(*in.p))) ++in.p;
-        if(in.p < in.end && !is_space(*in.p) && *in.p != '#')
+        while(in.p < in.end && (*in.p == '/' || *in.p == '-' || is_text_digit(*in.p))) ++in.p;
+        if(in.p < in.end && !is_text_space(*in.p) && *in.p != '#')
           in.fail("cannot parse corner " + std::to_string(polygon.size()) + " of face " +
                   std::to_string(face_number + 1) + ": unexpected " + in.found());
       }
       if(polygon.size() < 3)
         in.fail("face " + std::to_string(face_number + 1) + " has " + std::to_string(polygon.size()) +
                 " vertices; a face needs at least 3");
-      add_polygon(soup, polygon.data(), polygon.size());
+      add_fan_of_triangles(soup, polygon.data(), polygon.size());
       ++face_number;
       in.skip_line();
     }

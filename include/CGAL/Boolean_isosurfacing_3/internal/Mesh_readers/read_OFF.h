@@ -27,7 +27,7 @@ inline bool read_OFF_keyword(Text_cursor& in)
 {
   const char* q = in.p;
   const char* start = q;
-  while(q < in.end && !is_space(*q) && *q != '#') ++q;
+  while(q < in.end && !is_text_space(*q) && *q != '#') ++q;
   const std::string word(start, q);
   if(word.size() < 3 || word.compare(word.size() - 3, 3, "OFF") != 0)
     return false;
@@ -51,10 +51,11 @@ inline void read_OFF(const char* begin, const char* end, Triangle_soup_3& soup)
 {
   Text_cursor in(begin, end);
   in.skip_spaces_and_comments('#');
-  if(!read_OFF_keyword(in) && !(in.p < end && is_digit(*in.p)))
+  if(!read_OFF_keyword(in) && !(in.p < end && is_text_digit(*in.p)))
     in.fail("cannot parse it as OFF: expected the keyword OFF, found " + in.found());
   std::uint64_t nv = 0, nf = 0, ne = 0;
   in.skip_spaces_and_comments('#');
+  const char* header = in.p; // the counts
   if(!in.parse_unsigned(nv))
     in.fail("cannot parse the vertex count: expected a whole number, found " + in.found());
   in.skip_spaces_and_comments('#');
@@ -64,18 +65,19 @@ inline void read_OFF(const char* begin, const char* end, Triangle_soup_3& soup)
     in.fail("cannot parse the edge count: expected a whole number, found " + in.found());
   in.skip_line();
 
-  // "0 0 0\n" per vertex, "3 0 1 2\n" per face; the last newline may be missing.
+  // "0 0 0\n" per vertex and at least 6 bytes per face ("3 0 1 2\n" has 8):
+  // a bound on memory, not a parse, so it is kept loose.
   const std::uint64_t available = std::uint64_t(end - in.p) + 1;
   if(!count_fits(nv, 6, available))
-    in.fail(count_error("vertices", nv, 6, available));
-  if(!count_fits(nf, 8, available - nv * 6))
-    in.fail(count_error("faces after the vertices", nf, 8, available - nv * 6));
+    in.fail_at(header, count_error("vertices", nv, 6, available));
+  if(!count_fits(nf, 6, available - nv * 6))
+    in.fail_at(header, count_error("faces after the vertices", nf, 6, available - nv * 6));
   check_point_count(nv);
 
   soup.points.clear();
   soup.triangles.clear();
-  soup.points.reserve(std::size_t(nv));
-  soup.triangles.reserve(std::size_t(nf));
+  reserve_in_huge_pages(soup.points, std::size_t(nv));
+  reserve_in_huge_pages(soup.triangles, std::size_t(nf));
   for(std::uint64_t i = 0; i < nv; ++i)
   {
     in.skip_spaces_and_comments('#');
@@ -127,7 +129,7 @@ inline void read_OFF(const char* begin, const char* end, Triangle_soup_3& soup)
                 std::to_string(nv) + " vertices");
       polygon.push_back(std::uint32_t(v));
     }
-    add_polygon(soup, polygon.data(), polygon.size());
+    add_fan_of_triangles(soup, polygon.data(), polygon.size());
     in.skip_line();
   }
   in.skip_spaces_and_comments('#');

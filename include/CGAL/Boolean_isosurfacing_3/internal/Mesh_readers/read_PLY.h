@@ -39,7 +39,7 @@ inline std::size_t size_of(Ply_type t)
   return sizes[int(t)];
 }
 
-inline bool is_integral(Ply_type t) { return t != Ply_type::float32 && t != Ply_type::float64; }
+inline bool is_integral_ply_type(Ply_type t) { return t != Ply_type::float32 && t != Ply_type::float64; }
 
 inline bool parse_ply_type(const std::string& s, Ply_type& t)
 {
@@ -121,9 +121,9 @@ inline Ply_header read_PLY_header(const char* begin, const char* end)
     words.clear();
     for(const char* q = line; q < line_end;)
     {
-      while(q < line_end && is_blank(*q)) ++q;
+      while(q < line_end && is_text_blank(*q)) ++q;
       const char* w = q;
-      while(q < line_end && !is_blank(*q)) ++q;
+      while(q < line_end && !is_text_blank(*q)) ++q;
       if(q > w) words.emplace_back(w, q);
     }
     const auto fail = [&](const std::string& message) {
@@ -171,7 +171,7 @@ inline Ply_header read_PLY_header(const char* begin, const char* end)
       if(words.size() == 5 && words[1] == "list")
       {
         p.is_list = true;
-        ok = parse_ply_type(words[2], p.count_type) && parse_ply_type(words[3], p.type) && is_integral(p.count_type);
+        ok = parse_ply_type(words[2], p.count_type) && parse_ply_type(words[3], p.type) && is_integral_ply_type(p.count_type);
         p.name = words[4];
       }
       else
@@ -336,7 +336,7 @@ const char* read_binary_PLY_element(const Ply_reader_context& cx, const Ply_elem
                                           ", but there are " + std::to_string(cx.vertex_count) + " vertices");
           polygon.push_back(std::uint32_t(v));
         }
-        add_polygon(soup, polygon.data(), polygon.size());
+        add_fan_of_triangles(soup, polygon.data(), polygon.size());
       }
       else
         p += std::size_t(count) * item;
@@ -394,7 +394,7 @@ const char* read_binary_PLY_faces(const Ply_reader_context& cx, const Ply_elemen
                                       ", but there are " + std::to_string(nv) + " vertices");
       polygon.push_back(std::uint32_t(v));
     }
-    add_polygon(soup, polygon.data(), polygon.size());
+    add_fan_of_triangles(soup, polygon.data(), polygon.size());
   }
   return p;
 }
@@ -479,7 +479,7 @@ inline const char* read_ASCII_PLY_element(const Ply_reader_context& cx, const Pl
         }
       }
       if(indices)
-        add_polygon(soup, polygon.data(), polygon.size());
+        add_fan_of_triangles(soup, polygon.data(), polygon.size());
     }
     if(is_vertex)
     {
@@ -539,7 +539,7 @@ inline void read_PLY(const char* begin, const char* end, Triangle_soup_3& soup)
   if(roles.indices < 0)
     roles.indices = face.find("vertex_index");
   if(roles.indices < 0 || !face.properties[std::size_t(roles.indices)].is_list ||
-     !is_integral(face.properties[std::size_t(roles.indices)].type))
+     !is_integral_ply_type(face.properties[std::size_t(roles.indices)].type))
     throw Parse_error("line " + std::to_string(face.line) +
                           ": element 'face' has no list property 'vertex_indices' of an integer type",
                       face.line);
@@ -560,8 +560,8 @@ inline void read_PLY(const char* begin, const char* end, Triangle_soup_3& soup)
   check_point_count(vertex.count);
   soup.points.clear();
   soup.triangles.clear();
-  soup.points.reserve(std::size_t(vertex.count));
-  soup.triangles.reserve(std::size_t(face.count));
+  reserve_in_huge_pages(soup.points, std::size_t(vertex.count));
+  reserve_in_huge_pages(soup.triangles, std::size_t(face.count));
 
   const Ply_reader_context cx{begin, end, vertex.count};
   const char* p = header.data;
@@ -581,7 +581,7 @@ inline void read_PLY(const char* begin, const char* end, Triangle_soup_3& soup)
       p = swap ? read_binary_PLY_element<true>(cx, e, roles, is_vertex, false, p, soup)
                : read_binary_PLY_element<false>(cx, e, roles, is_vertex, false, p, soup);
   }
-  while(p < end && is_space(*p)) ++p;
+  while(p < end && is_text_space(*p)) ++p;
   if(p != end)
   {
     if(ascii)

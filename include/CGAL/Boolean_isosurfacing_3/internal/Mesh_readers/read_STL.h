@@ -15,6 +15,7 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/Mesh_readers/Input_buffer.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Mesh_readers/Soup_builder.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -98,7 +99,7 @@ inline void read_binary_STL(const char* begin, const char* end, Triangle_soup_3&
 {
   soup.points.clear();
   soup.triangles.clear();
-  soup.triangles.reserve(std::size_t(facets));
+  reserve_in_huge_pages(soup.triangles, std::size_t(facets));
   // A closed triangle mesh has about half as many points as facets.
   Point_welder welder(soup.points, std::size_t(facets / 2 + 4));
   const char* p = begin + 84;
@@ -185,7 +186,7 @@ inline void read_ASCII_STL(const char* begin, const char* end, Triangle_soup_3& 
     expect("endloop");
     expect("endfacet");
     corners += polygon.size();
-    add_polygon(soup, polygon.data(), polygon.size());
+    add_fan_of_triangles(soup, polygon.data(), polygon.size());
     ++facet;
   }
   soup.unwelded_corners = corners;
@@ -204,9 +205,12 @@ inline void read_STL(const char* begin, const char* end, Triangle_soup_3& soup)
     if(size == 84 + 50 * std::uint64_t(facets))
       return read_binary_STL(begin, end, soup, facets);
   }
+  // A NUL byte cannot be in ASCII STL: a binary file whose size does not
+  // match its facet count (truncated) even if it starts with "solid".
+  const bool binary = size >= 84 && std::memchr(begin, '\0', std::size_t(std::min<std::uint64_t>(size, 4096))) != nullptr;
   Text_cursor probe(begin, end);
   probe.skip_spaces();
-  if(std::size_t(end - probe.p) >= 5 && std::memcmp(probe.p, "solid", 5) == 0 && is_space(probe.p[5]))
+  if(!binary &&std::size_t(end - probe.p) >= 5 && std::memcmp(probe.p, "solid", 5) == 0 && is_text_space(probe.p[5]))
     return read_ASCII_STL(begin, end, soup);
   if(size < 84)
     throw Invalid_input_error("cannot parse it as STL: " + std::to_string(size) +
