@@ -1,4 +1,5 @@
-// surveyor_volume against PMP::volume (Epick) and against a plain loop that
+// surveyor_volume (on a Surface_mesh, on a soup of kernel points, and on the
+// flat arrays of IO::read_triangle_soup) against PMP::volume (Epick) and against a plain loop that
 // sums signed tetrahedra over flat arrays (the memory-bandwidth limit), on a
 // torus of 1.2 million triangles made in code and on the shared meshes.
 //
@@ -46,6 +47,7 @@ struct Input
   std::vector<std::array<double, 3>> flat_points;
   std::vector<Point> soup_points;
   std::vector<std::array<std::uint32_t, 3>> flat_triangles;
+  BI::Triangle_soup_3 soup;
   double exact = 0;
 };
 
@@ -64,6 +66,8 @@ void prepare(Input& input)
     input.flat_triangles.push_back({std::uint32_t(target(h, mesh)), std::uint32_t(target(next(h, mesh), mesh)),
                                     std::uint32_t(target(prev(h, mesh), mesh))});
   }
+  input.soup.points = input.flat_points;
+  input.soup.triangles = input.flat_triangles;
   CGAL::Surface_mesh<Epeck::Point_3> exact_mesh;
   CGAL::copy_face_graph(mesh, exact_mesh);
   input.exact = CGAL::to_double(CGAL::exact(PMP::volume(exact_mesh)));
@@ -114,6 +118,9 @@ void register_input(const std::shared_ptr<Input>& input)
   })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("plain_loop/flat/" + n).c_str(), [input](benchmark::State& s) {
     run(s, *input, [&] { return plain_loop_volume(*input); });
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("surveyor_volume/flat/" + n).c_str(), [input](benchmark::State& s) {
+    run(s, *input, [&] { return BI::surveyor_volume(input->soup); });
   })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("surveyor_volume/soup/" + n).c_str(), [input](benchmark::State& s) {
     run(s, *input, [&] {

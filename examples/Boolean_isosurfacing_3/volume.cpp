@@ -3,7 +3,9 @@
 //   volume [--check] [--signed] [--no-self-intersection-check] FILE...
 //   volume --demo DIR
 //
-// Reads OFF/OBJ/PLY/STL (CGAL's polygon soup IO), prints one line per file.
+// Reads OFF/OBJ/PLY/STL with the package's own readers (IO::read_triangle_soup:
+// flat arrays, no mesh), prints one line per file.  A mesh is built only for
+// the self-intersection check and --check.
 // --check also prints PMP::volume (Epick) and the exact volume (Epeck) with
 // the relative errors of both double results.  --demo writes meshes made in
 // code (some far from the origin) to DIR and runs --check on them.
@@ -11,6 +13,7 @@
 // stderr; the exit status is then 1 (2 for a usage error).
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/read_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
@@ -53,12 +56,30 @@ struct Options
   std::vector<std::string> files;
 };
 
+const char* const usage_text = "usage: volume [--check] [--signed] [--no-self-intersection-check] FILE...\n"
+                               "       volume --demo DIR\n";
+
 int usage(const char* message)
 {
-  std::cerr << "volume: " << message << "\n"
-            << "usage: volume [--check] [--signed] [--no-self-intersection-check] FILE...\n"
-            << "       volume --demo DIR\n";
+  std::cerr << "volume: " << message << "\n" << usage_text;
   return 2;
+}
+
+int help()
+{
+  std::cout << "volume: the Surveyor's-formula volume of closed triangle meshes (OFF, OBJ, PLY, STL)\n"
+            << usage_text
+            << "  --check                       also print PMP::volume (Epick) and the exact (Epeck) volume\n"
+               "  --signed                      accept inward and self-intersecting surfaces (signed volume)\n"
+               "  --no-self-intersection-check  skip the O(n log n) check (the volume itself is O(n))\n"
+               "  --demo DIR                    write meshes made in code to DIR and --check them\n"
+               "Exit status: 0 on success, 1 if a file cannot be read or does not bound a solid, 2 for usage.\n";
+  return 0;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 double exact_volume(const Mesh& mesh)
@@ -77,23 +98,32 @@ bool report(const std::string& path, const Options& options)
 {
   try
   {
-    Mesh mesh;
-    BI::IO::read_closed_triangle_mesh(path, mesh, options.signed_volume);
     const auto start = std::chrono::steady_clock::now();
-    const double volume = BI::surveyor_volume(mesh, BI::parameters::signed_volume(options.signed_volume));
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const BI::Triangle_soup_3 soup = BI::IO::read_triangle_soup(path);
+    const double read_ms = milliseconds_since(start);
+    const auto volume_start = std::chrono::steady_clock::now();
+    // Validates the soup (closed, oriented, finite) as it computes.
+    const double volume = BI::surveyor_volume(soup, BI::parameters::signed_volume(options.signed_volume));
+    const double ms = milliseconds_since(volume_start);
+    Mesh mesh;
+    const bool need_mesh = options.check || (options.self_intersection_check && !options.signed_volume);
+    if(need_mesh)
+      BI::IO::triangle_soup_to_mesh(soup, mesh);
     if(options.self_intersection_check && !options.signed_volume && PMP::does_self_intersect(mesh))
       throw BI::Self_intersecting_mesh_error("the surface intersects itself, so its inside is not well defined "
                                              "(use --signed for the winding-number-weighted volume)");
+    std::string note;
+    if(soup.triangulated_polygons != 0)
+      note = ", " + std::to_string(soup.triangulated_polygons) + " polygons split into triangles";
     if(!options.check)
     {
-      std::printf("%s: volume %.17g  (%zu triangles, %.3f ms)\n", path.c_str(), volume,
-                  std::size_t(mesh.number_of_faces()), ms);
+      std::printf("%s: volume %.17g  (%zu triangles%s, read %.1f ms, volume %.3f ms)\n", path.c_str(), volume,
+                  soup.triangles.size(), note.c_str(), read_ms, ms);
       return true;
     }
     const double pmp = PMP::volume(mesh);
     const double exact = exact_volume(mesh);
-    std::printf("%s: %zu triangles\n", path.c_str(), std::size_t(mesh.number_of_faces()));
+    std::printf("%s: %zu triangles%s\n", path.c_str(), soup.triangles.size(), note.c_str());
     std::printf("  surveyor_volume      %-24.17g relative error %.2e  (%.3f ms)\n", volume,
                 relative_error(volume, exact), ms);
     std::printf("  PMP::volume (Epick)  %-24.17g relative error %.2e\n", pmp, relative_error(pmp, exact));
@@ -179,7 +209,7 @@ int main(int argc, char** argv)
       if(i + 1 >= argc) return usage("--demo needs a directory");
       options.demo_dir = argv[++i];
     }
-    else if(arg == "-h" || arg == "--help") { usage("the Surveyor's-formula volume of closed triangle meshes"); return 0; }
+    else if(arg == "-h" || arg == "--help") return help();
     else if(!arg.empty() && arg[0] == '-') return usage(("unknown option " + arg).c_str());
     else options.files.push_back(arg);
   }

@@ -159,8 +159,11 @@ TEST_F(VolumeTool, BadInputGetsOneClearLineAndNonZeroExit)
   const Bad_case cases[] = {
       {"open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n", "not closed"},
       {"garbage.off", "OFF\n4 4 0\n0 0 zero\n", "cannot parse"},
-      {"quad.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
-                   "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n", "has 4 vertices"},
+      {"huge.off", "OFF\n1000000000 1 0\n", "line 2: the header declares 1000000000 vertices"},
+      {"nan.off", "OFF\n4 4 0\n0 0 0\nnan 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+       "line 4: vertex 1 has a non-finite coordinate (nan 0 0)"},
+      {"int.ply", "ply\nformat ascii 1.0\nproperty int x\nend_header\n", "line 3: 'property' before any 'element'"},
+      {"binary.stl", "\x01\x02\x03 not an STL file", "cannot parse it as STL"},
       {"empty.off", "OFF\n0 0 0\n", "no face"},
       {"inward.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n", "oriented inward"},
       {"not_a_mesh.txt", "hello\n", "cannot parse"},
@@ -179,6 +182,37 @@ TEST_F(VolumeTool, BadInputGetsOneClearLineAndNonZeroExit)
   EXPECT_NE(missing.status, 0);
   EXPECT_NE(missing.err.find("cannot open"), std::string::npos) << missing.err;
   EXPECT_EQ(count_lines(missing.err), 1) << missing.err;
+}
+
+TEST_F(VolumeTool, QuadsAreTriangulatedAndTheToolSaysSo)
+{
+  const Result r = run(write("quad.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                                         "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("volume 1 "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("12 triangles, 6 polygons split into triangles"), std::string::npos) << r.out;
+}
+
+TEST_F(VolumeTool, IntegerCoordinatesInPlyAreLegal)
+{
+  // CGAL 5.5's PLY reader dereferences null on this file (the tool used to exit 139).
+  const Result r = run(write("int.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty int x\nproperty int y\n"
+                                        "property int z\nelement face 4\nproperty list uchar int vertex_indices\n"
+                                        "end_header\n0 0 0\n6 0 0\n0 6 0\n0 0 6\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"));
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("volume 36 "), std::string::npos) << r.out;
+}
+
+TEST_F(VolumeTool, HelpGoesToStdoutAndADirectoryIsAClearError)
+{
+  const Result help = run("--help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("usage: volume"), std::string::npos) << help.out;
+  EXPECT_TRUE(help.err.empty()) << help.err;
+  const Result dir = run(m_dir);
+  EXPECT_EQ(dir.status, 1);
+  EXPECT_NE(dir.err.find("is a directory"), std::string::npos) << dir.err;
+  EXPECT_EQ(count_lines(dir.err), 1) << dir.err;
 }
 
 TEST_F(VolumeTool, SignedOptionAcceptsAnInwardMesh)

@@ -4,8 +4,11 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_SURVEYOR_VOLUME_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_SURVEYOR_VOLUME_H
 
+#include <CGAL/Boolean_isosurfacing_3/IO/Triangle_soup_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Huge_pages.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tetrahedra_sum.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
@@ -132,7 +135,10 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
       ++first[std::min(t[i], t[(i + 1) % 3]) + 1];
   for(std::size_t v = 0; v < number_of_points; ++v)
     first[v + 1] += first[v];
-  std::vector<std::uint64_t> entries(first.back());
+  // Every entry is written below: no zero-filling of 3n words first.
+  std::vector<std::uint64_t, Default_init_allocator<std::uint64_t>> entries;
+  reserve_in_huge_pages(entries, first.back());
+  entries.resize(first.back());
   std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
   for(const TriangleIndices& t : triangles)
     for(int i = 0; i < 3; ++i)
@@ -145,7 +151,16 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
   for(std::size_t low = 0; low < number_of_points; ++low)
   {
     const auto begin = entries.begin() + first[low], end = entries.begin() + first[low + 1];
-    std::sort(begin, end);
+    if(end - begin <= 16)
+      for(auto i = begin + 1; i < end; ++i) // insertion sort: buckets hold ~6 entries
+      {
+        const std::uint64_t v = *i;
+        auto j = i;
+        for(; j != begin && *(j - 1) > v; --j) *j = *(j - 1);
+        *j = v;
+      }
+    else
+      std::sort(begin, end);
     for(auto run = begin; run != end;)
     {
       const std::uint64_t high = *run >> 1;
@@ -225,7 +240,8 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
  * \throws Non_finite_value_error if a vertex has a NaN or infinite coordinate.
  * \throws Inward_oriented_mesh_error, Self_intersecting_mesh_error as above.
  */
-template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS,
+          typename = std::enable_if_t<!std::is_same<TriangleMesh, Triangle_soup_3>::value>>
 typename CGAL::GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type::FT
 surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters::default_values())
 {
@@ -399,6 +415,95 @@ auto surveyor_volume(const PointRange& points,
         get(point_map, *(first_point + t[2])));
   };
   const FT result = internal::sum_of_signed_tetrahedra(gt, c, for_each_triangle);
+  internal::check_orientation_of_result(result, signed_result);
+  return result;
+}
+
+namespace internal {
+
+// Indices in range and three distinct vertices per triangle: what
+// check_soup_is_closed and the volume loop assume.
+template <typename TriangleArray>
+void check_triangle_indices(const TriangleArray& triangles, std::size_t number_of_points)
+{
+  std::size_t face_number = 0;
+  for(const auto& t : triangles)
+  {
+    const bool in_range = std::size_t(t[0]) < number_of_points && std::size_t(t[1]) < number_of_points &&
+                          std::size_t(t[2]) < number_of_points;
+    if(!in_range || t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+    {
+      for(int i = 0; i < 3; ++i)
+        if(std::size_t(t[i]) >= number_of_points)
+          throw Invalid_input_error("triangle #" + std::to_string(face_number) + " refers to point " +
+                                    std::to_string(t[i]) + ", but there are " + std::to_string(number_of_points) +
+                                    " points");
+      throw Invalid_input_error("triangle #" + std::to_string(face_number) + " repeats a vertex (it is degenerate)");
+    }
+    ++face_number;
+  }
+}
+
+// The centroid of flat points, which must be finite (else the point is named).
+template <typename PointArray>
+std::array<double, 3> finite_centroid(const PointArray& points)
+{
+  double x = 0, y = 0, z = 0;
+  for(const auto& p : points)
+  {
+    x += p[0];
+    y += p[1];
+    z += p[2];
+  }
+  if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+  {
+    std::size_t index = 0;
+    for(const auto& p : points)
+    {
+      if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+      {
+        std::ostringstream out;
+        out << "point #" << index << " has a non-finite coordinate (" << p[0] << ' ' << p[1] << ' ' << p[2] << ")";
+        throw Non_finite_value_error(out.str());
+      }
+      ++index;
+    }
+    throw Non_finite_value_error("the coordinates are too large: their sum overflows");
+  }
+  const double n = double(points.size());
+  return {x / n, y / n, z / n};
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Volume
+ *
+ * computes the volume enclosed by the closed triangle soup in flat arrays
+ * (what `IO::read_triangle_soup()` returns): the same formula, accuracy and
+ * checks as the soup overload, without any kernel: the fastest path, a
+ * structure-of-arrays loop over the index array.
+ *
+ * Named parameters: `Boolean_isosurfacing::parameters::signed_volume`.
+ *
+ * \throws Empty_input_error, Invalid_input_error (an index out of range or
+ * repeated in a triangle), Open_mesh_error, Non_finite_value_error,
+ * Inward_oriented_mesh_error.
+ */
+template <typename CGAL_NP_TEMPLATE_PARAMETERS>
+double surveyor_volume(const Triangle_soup_3& soup, const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const bool signed_result = choose_parameter(get_parameter(np, internal_np::signed_volume), false);
+  if(soup.triangles.empty())
+    throw Empty_input_error("the polygon soup has no face");
+  if(soup.points.size() >= (std::size_t(1) << 32))
+    throw Invalid_input_error("the polygon soup has 2^32 points or more");
+  internal::check_triangle_indices(soup.triangles, soup.points.size());
+  internal::check_soup_is_closed(soup.triangles, soup.points.size());
+  const std::array<double, 3> c = internal::finite_centroid(soup.points);
+  const double result = internal::sum_of_signed_tetrahedra_of_arrays(soup.points, soup.triangles, c[0], c[1], c[2]);
   internal::check_orientation_of_result(result, signed_result);
   return result;
 }

@@ -4,16 +4,16 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_IO_READ_CLOSED_TRIANGLE_MESH_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_IO_READ_CLOSED_TRIANGLE_MESH_H
 
-#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
-#include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/Triangle_soup_3.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Mesh_readers/check_manifold_vertices.h>
 
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
-#include <fstream>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
 namespace CGAL {
@@ -21,44 +21,56 @@ namespace Boolean_isosurfacing {
 namespace IO {
 
 /*!
- * \ingroup PkgBooleanIsosurfacing3Ref
+ * \ingroup PkgBooleanIsosurfacing3IO
  *
- * reads `path` (OFF, OBJ, PLY, STL or any format of `CGAL::IO::read_polygon_soup()`)
- * into `mesh` and checks that it bounds a solid: a non-empty, closed,
- * consistently oriented, outward triangle mesh with finite coordinates and
- * manifold vertices.  Unlike `CGAL::IO::read_polygon_mesh()`, it never repairs
- * or reorients: a file that does not describe a solid is an error.
+ * builds `mesh` from a soup that bounds a solid (as `read_closed_triangle_soup()`
+ * returns), after checking that it is a 2-manifold (each edge in exactly two
+ * triangles, one fan of triangles around each vertex), which a halfedge
+ * data structure needs.
  *
- * \tparam MutableFaceGraph a model of `MutableFaceGraph` with an internal
- *         vertex point property whose kernel models `SurveyorVolumeTraits_3`
- *
- * \throws Invalid_input_error (or a derived type: `Empty_input_error`,
- *   `Non_triangle_face_error`, `Open_mesh_error`, `Non_finite_value_error`,
- *   `Inward_oriented_mesh_error`) whose message states the problem in one line,
- *   without the file name.  With `allow_inward = true`, inward-oriented meshes
- *   are accepted.
+ * \throws Invalid_input_error naming a non-manifold edge or vertex.
  */
 template <typename MutableFaceGraph>
-void read_closed_triangle_mesh(const std::string& path, MutableFaceGraph& mesh, bool allow_inward = false)
+void triangle_soup_to_mesh(const Triangle_soup_3& soup, MutableFaceGraph& mesh)
 {
   typedef typename boost::property_map<MutableFaceGraph, CGAL::vertex_point_t>::type Vertex_point_map;
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
-
-  struct stat info;
-  if(stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) || !std::ifstream(path))
-    throw Invalid_input_error("cannot open the file");
+  CGAL::Boolean_isosurfacing::internal::check_manifold_vertices(soup.triangles, soup.points.size());
   std::vector<Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
-    throw Invalid_input_error("cannot parse it as OFF, OBJ, PLY or STL (malformed or unsupported)");
-  // The soup overload of surveyor_volume validates everything a solid needs
-  // (faces, closedness, orientation, finiteness) with messages naming the
-  // offending element.
-  surveyor_volume(points, polygons, parameters::signed_volume(allow_inward));
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-    throw Invalid_input_error("it is closed but has a non-manifold vertex; split it first "
-                              "(PMP::duplicate_non_manifold_vertices)");
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  points.reserve(soup.points.size());
+  for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.triangles, mesh);
+}
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3IO
+ *
+ * reads `path` (OFF, OBJ, PLY or STL, see `read_triangle_soup()`) into `mesh`
+ * and checks that it bounds a solid: a non-empty, closed, consistently
+ * oriented, outward triangle mesh with finite coordinates and manifold
+ * vertices.  Polygons with more than 3 vertices are split into triangles;
+ * otherwise it never repairs or reorients: a file that does not describe a
+ * solid is an error.  The file is parsed by the package's own readers, which
+ * check header counts against the file size first (CGAL 5.5's readers
+ * allocate from them, and crash on some legal PLY files).
+ *
+ * \tparam MutableFaceGraph a model of `MutableFaceGraph` with an internal
+ *         vertex point property constructible from three doubles
+ *
+ * \returns the number of polygons that were split into triangles.
+ *
+ * \throws Invalid_input_error (or a derived type: `Parse_error` with the line
+ *   number for text formats, `Empty_input_error`, `Open_mesh_error`,
+ *   `Non_finite_value_error`, `Inward_oriented_mesh_error`) whose message
+ *   states the problem in one line, without the file name.  With
+ *   `allow_inward = true`, inward-oriented meshes are accepted.
+ */
+template <typename MutableFaceGraph>
+std::size_t read_closed_triangle_mesh(const std::string& path, MutableFaceGraph& mesh, bool allow_inward = false)
+{
+  const Triangle_soup_3 soup = read_closed_triangle_soup(path, allow_inward);
+  triangle_soup_to_mesh(soup, mesh);
+  return soup.triangulated_polygons;
 }
 
 } // namespace IO
