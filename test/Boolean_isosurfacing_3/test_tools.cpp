@@ -158,7 +158,9 @@ TEST_F(VolumeTool, BadInputGetsOneClearLineAndNonZeroExit)
 {
   const Bad_case cases[] = {
       {"open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n", "not closed"},
-      {"garbage.off", "OFF\n4 4 0\n0 0 zero\n", "cannot parse"},
+      {"garbage.off", "OFF\n4 4 0\n0 0 zero\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+       "line 3: cannot parse coordinate 3 of vertex 0"},
+      {"short.off", "OFF\n4 4 0\n0 0 zero\n", "line 2: the header declares 4 vertices"},
       {"huge.off", "OFF\n1000000000 1 0\n", "line 2: the header declares 1000000000 vertices"},
       {"nan.off", "OFF\n4 4 0\n0 0 0\nnan 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
        "line 4: vertex 1 has a non-finite coordinate (nan 0 0)"},
