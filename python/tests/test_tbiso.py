@@ -66,11 +66,12 @@ def test_close_at_domain_boundary_gives_the_exact_half_box():
     assert_closed_oriented(polygons)
     assert info["volume"] == pytest.approx(1.5 * 2 * 2, abs=1e-13)
     assert set(labels.tolist()) == {-1, 0}
-    # one crease, the closed square where the plane meets the domain boundary
-    # (the boundary polygons all carry label -1: the box's edges are no creases)
-    assert len(corners) == 0
-    assert len(creases) == 1 and creases[0][0] == creases[0][-1]
-    assert np.all(V[creases[0], 0] == 0.5)
+    # a half box: the square where the plane meets the domain boundary and the
+    # box's own edges below it are creases (closing faces of different boundary
+    # planes meet at creases): 8 corners, 12 crease polylines
+    assert len(corners) == 8
+    assert len(creases) == 12
+    assert np.sum(V[corners, 0] == 0.5) == 4
 
 
 def test_sphere_volume_converges():
@@ -124,8 +125,9 @@ def test_tet_mesh_domain_with_a_linear_field_is_exact():
     assert info["closed"]
     assert_closed_oriented(polygons)
     assert info["volume"] == pytest.approx(0.25, abs=1e-15)
-    assert len(corners) == 0 and len(creases) == 1
-    assert np.all(V[creases[0], 2] == 0.25)
+    # the cube's edges below the plane are creases too: 8 corners, 12 polylines
+    assert len(corners) == 8 and len(creases) == 12
+    assert np.sum(V[corners, 2] == 0.25) == 4
 
 
 def test_smoothing_keeps_corners_and_creases():
