@@ -116,11 +116,20 @@ public:
    *         points of their `vertex_point` maps have `x()`, `y()`, `z()`
    *         convertible to double by `CGAL::to_double()`.
    *
-   * \param np optional named parameters:
-   *   - `Boolean_isosurfacing::parameters::progress(f)`: `f(double)` is called
-   *     with fractions in [0, 1], from the calling thread;
-   *   - `Boolean_isosurfacing::parameters::max_memory_bytes(n)`: refuse to
-   *     start when the estimated memory exceeds `n` (default 8 GiB).
+   * \param meshes the closed triangle meshes; bit m of a point's mask is mesh m
+   * \param lattice the lattice whose points are classified
+   * \param np an optional sequence of named parameters among the ones listed below
+   *
+   * \cgalNamedParamsBegin
+   *   \cgalParamNBegin{progress}
+   *     \cgalParamDescription{called with fractions in [0, 1], from the calling thread}
+   *     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{max_memory_bytes}
+   *     \cgalParamDescription{refuse to start when the estimated memory exceeds it (`Lattice_too_large_error`)}
+   *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+   *   \cgalParamNEnd
+   * \cgalNamedParamsEnd
    *
    * Coordinates are converted to double; the predicates are exact for those
    * doubles (so exact for `Epick` and `Simple_cartesian<double>` meshes).

@@ -6,7 +6,7 @@
 
 // The signed distance of Hoppe, DeRose, Duchamp, McDonald and Stuetzle,
 // "Surface reconstruction from unorganized points" (SIGGRAPH 1992), as used by
-// seeds/contour_tracing_signed_distance.txt:
+// the contour-tracing assignment ([ContourTracing] in the manual's references):
 //
 //   f(p) = (p - o_i) . n_i,   i = the tangent plane whose centre o_i is nearest p,
 //

@@ -4,7 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_CONTOUR_POINT_SET_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_CONTOUR_POINT_SET_H
 
-// Contouring oriented point samples (seeds/contour_tracing_signed_distance.txt):
+// Contouring oriented point samples (the contour-tracing assignment, [ContourTracing] in the manual's references):
 // Hoppe's tangent-plane signed distance (Tangent_plane_signed_distance_3.h)
 // sampled at the vertices of a regular lattice and contoured with the
 // package's watertight Marching Cubes table, refined on ambiguous faces by the
