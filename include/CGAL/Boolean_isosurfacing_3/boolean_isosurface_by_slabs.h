@@ -43,6 +43,8 @@ namespace Boolean_isosurfacing {
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// A `ScalarFieldSource` over fields already in memory.
+///
+/// \cgalModels{ScalarFieldSource}
 class Scalar_fields_source
 {
 public:
@@ -60,6 +62,8 @@ private:
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// A `BooleanIsosurfaceSink` appending to a `Boolean_isosurface_soup`.
+///
+/// \cgalModels{BooleanIsosurfaceSink}
 template <typename Point_3>
 class Boolean_isosurface_soup_sink
 {

@@ -39,6 +39,8 @@ namespace Boolean_isosurfacing {
 /// `IO::Raw_scalar_field_reader`: vertex-major, little-endian float64 or
 /// float32, no header) with `MPI_File_read_at`: each rank reads only the
 /// vertices it asks for.  Opening is collective over `comm`.
+///
+/// \cgalModels{ScalarFieldSource}
 class Mpi_raw_scalar_field_reader
 {
 public:
