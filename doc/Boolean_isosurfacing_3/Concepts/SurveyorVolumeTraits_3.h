@@ -40,10 +40,16 @@ public:
 
   /// \name Function objects
   /// @{
+
+  /// returns a `Compute_x_3`.
   Compute_x_3 compute_x_3_object() const;
+  /// returns a `Compute_y_3`.
   Compute_y_3 compute_y_3_object() const;
+  /// returns a `Compute_z_3`.
   Compute_z_3 compute_z_3_object() const;
+  /// returns a `Construct_point_3`.
   Construct_point_3 construct_point_3_object() const;
+  /// returns a `Compute_volume_3`.
   Compute_volume_3 compute_volume_3_object() const;
   /// @}
 };

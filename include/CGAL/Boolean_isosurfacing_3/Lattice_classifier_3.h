@@ -212,7 +212,9 @@ public:
   /// \name Access
   /// @{
 
+  /// The classified lattice.
   const Regular_lattice_3& lattice() const { return m_lattice; }
+  /// The number of meshes (bits of a mask).
   std::size_t number_of_meshes() const { return m_number_of_meshes; }
 
   /// Bytes per lattice point of the masks: 1, 2, 4 or 8.
@@ -230,8 +232,10 @@ public:
     default: return m_masks64[linear_index];
     }
   }
+  /// The mask of lattice point (i, j, k).
   std::uint64_t mask(std::size_t i, std::size_t j, std::size_t k) const { return mask(m_lattice.linear_index(i, j, k)); }
 
+  /// true iff lattice point (i, j, k) is inside mesh `mesh`.
   bool is_inside(std::size_t mesh, std::size_t i, std::size_t j, std::size_t k) const
   {
     return ((mask(i, j, k) >> mesh) & 1) != 0;
@@ -297,6 +301,7 @@ public:
   /// Number of crossings on lattice edges along `axis` (crossings outside
   /// the lattice are not stored).
   std::size_t number_of_crossings(int axis) const { return m_crossings[axis].size(); }
+  /// The number of crossings of the meshes with lattice edges, all axes.
   std::size_t number_of_crossings() const
   {
     return m_crossings[0].size() + m_crossings[1].size() + m_crossings[2].size();
