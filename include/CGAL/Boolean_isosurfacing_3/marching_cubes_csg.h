@@ -464,9 +464,18 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
  * \param lattice the sampling lattice (see `Regular_lattice_3::enclosing()`)
  * \param points, triangles the soup is appended to them (indices are offset
  *        by the initial size of `points`)
- * \param np `Boolean_isosurfacing::parameters::progress(f)` (`f(double)`
- *        called from the calling thread) and `max_memory_bytes(n)` (default
- *        8 GiB; refuse to start beyond it).
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{progress}
+ *     \cgalParamDescription{called with the fraction done, from the calling thread}
+ *     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_memory_bytes}
+ *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * \throws Invalid_input_error if `expression.number_of_variables() !=
  * meshes.size()`; the exceptions of `Lattice_classifier_3::classify()`.
@@ -503,6 +512,17 @@ Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes
  *
  * As the polygon soup overload, and adds the result to `output` with
  * `PMP::polygon_soup_to_polygon_mesh()`.
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{progress}
+ *     \cgalParamDescription{called with the fraction done, from the calling thread}
+ *     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_memory_bytes}
+ *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * \tparam MutableFaceGraph a model of `MutableFaceGraph` whose vertex points
  *         are constructible from three doubles
