@@ -471,6 +471,19 @@ TEST(MeshReaders, ClosedSoupAndMeshValidation)
   EXPECT_EQ(BI::IO::read_closed_triangle_mesh(write("quads.off", quads), cube), 6u);
   EXPECT_EQ(cube.number_of_faces(), 12u);
   EXPECT_TRUE(CGAL::is_closed(cube));
+  // Found by fuzz_closed_triangle_mesh: a triangle and its reverse pass the
+  // edge check but bound nothing; so does a flat closed surface (two
+  // tetrahedra's worth of faces folded into a plane), and an empty one.
+  const std::string pillow = "v 0 0 0\nv 0 0 1\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 3\nf* 1 4 3int82\xba 43\n";
+  for(bool allow_inward : {false, true})
+    EXPECT_TRUE(contains(error_of([&] { BI::IO::read_closed_triangle_soup(write("pillow.obj", pillow), allow_inward); }),
+                         "doubly covered triangle"));
+  const std::string flat = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  EXPECT_TRUE(contains(error_of([&] { BI::IO::read_closed_triangle_soup(write("flat.off", flat)); }),
+                       "encloses no volume"));
+  // With allow_inward (the parity reading) a signed volume of 0 is not an
+  // error: an outward cube and an inward copy elsewhere is a parity solid.
+  EXPECT_NO_THROW(BI::IO::read_closed_triangle_soup(write("flat2.off", flat), true));
   std::system(("rm -rf '" + std::string(dir) + "'").c_str());
 }
 

@@ -21,7 +21,8 @@ namespace IO {
  * solid: non-empty, every index in range, no repeated vertex in a triangle,
  * closed and consistently oriented (every directed edge matched by its
  * opposite: the linear-time check of the soup `surveyor_volume()`), finite,
- * and outward (a positive volume) unless `allow_inward`.  Non-manifold
+ * and outward (a positive volume) unless `allow_inward`, with at least 4
+ * triangles (fewer can only cover one triangle twice).  Non-manifold
  * vertices are allowed (the soup has no connectivity to break); see
  * `read_closed_triangle_mesh()` for a `FaceGraph`.
  *
@@ -32,7 +33,15 @@ namespace IO {
 inline Triangle_soup_3 read_closed_triangle_soup(const std::string& path, bool allow_inward = false)
 {
   Triangle_soup_3 soup = read_triangle_soup(path);
-  surveyor_volume(soup, parameters::signed_volume(allow_inward));
+  const double volume = surveyor_volume(soup, parameters::signed_volume(allow_inward));
+  // A closed soup of fewer than 4 triangles is a doubly covered triangle (the
+  // edge check cannot tell it from a solid), and an outward soup of volume 0
+  // (certified: exactly 0) is flat: neither bounds a solid.
+  if(soup.triangles.size() < 4)
+    throw Invalid_input_error("the closed surface has only " + std::to_string(soup.triangles.size()) +
+                              " triangles: a doubly covered triangle bounds no solid");
+  if(!allow_inward && volume == 0)
+    throw Invalid_input_error("the closed surface encloses no volume (it is flat, or its faces cover each other)");
   return soup;
 }
 
