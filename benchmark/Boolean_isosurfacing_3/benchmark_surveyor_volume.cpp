@@ -122,6 +122,22 @@ void register_input(const std::shared_ptr<Input>& input)
   benchmark::RegisterBenchmark(("surveyor_volume/flat/" + n).c_str(), [input](benchmark::State& s) {
     run(s, *input, [&] { return BI::surveyor_volume(input->soup); });
   })->Unit(benchmark::kMillisecond);
+  // The two parts of surveyor_volume/flat: the closedness check (the soup's
+  // own, linear-time edge check; a mesh has it from its connectivity) and
+  // the certified sum with its centroid pass.
+  benchmark::RegisterBenchmark(("closedness_check_only/flat/" + n).c_str(), [input](benchmark::State& s) {
+    run(s, *input, [&] {
+      BI::internal::check_soup_is_closed(input->soup.triangles, input->soup.points.size());
+      return input->exact;
+    });
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("certified_sum_only/flat/" + n).c_str(), [input](benchmark::State& s) {
+    run(s, *input, [&] {
+      const std::array<double, 3> c = BI::internal::finite_centroid(input->soup.points);
+      return BI::internal::sum_of_signed_tetrahedra_of_arrays(input->soup.points, input->soup.triangles, c[0], c[1],
+                                                             c[2]);
+    });
+  })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("surveyor_volume/soup/" + n).c_str(), [input](benchmark::State& s) {
     run(s, *input, [&] {
       return BI::surveyor_volume(input->soup_points, input->flat_triangles);

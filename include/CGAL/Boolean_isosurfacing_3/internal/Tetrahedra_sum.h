@@ -10,10 +10,15 @@
 #include <CGAL/number_utils.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <limits>
 #include <memory>
 #include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace CGAL {
 namespace Boolean_isosurfacing {
@@ -48,116 +53,140 @@ struct Reference_point
   Point_3 point;      // the same point as a traits point
 };
 
-// Structure-of-arrays batches of triangles for the double path: the
-// traversal (halfedges, index arrays) only gathers coordinates, and the
-// arithmetic -- the term, its permanent, and the compensated sum in
-// independent lanes -- runs over whole batches in loops the compiler
-// vectorizes (SSE2 is enough: no -march needed).  The lanes are
-// independent TwoSum chains, so the dependency on one running sum no longer
-// serializes the loop; each lane is an error-free transformation like the
-// single chain, and the lanes are merged with TwoSum as well, so the error
-// bound below holds with n + lanes in place of n.
-class Tetrahedra_batch_sum
+// The double path's arithmetic on two triangles at a time (SSE2, which
+// every x86-64 has: no -march needed).  Each corner is given as a pointer to
+// its three doubles; the two triangles' coordinates are gathered straight
+// into the halves of SSE registers, so nothing is stored to a buffer and
+// read back.  For each triangle it computes the term 6 vol = n . (t1 - c),
+// n = (t2 - t1) x (t3 - t1), its permanent (the same expression on absolute
+// values, which bounds its rounding error), and adds the term to one of two
+// independent TwoSum chains of two lanes each (4 lanes), so that the add
+// latency does not serialize the loop.  Exactly the operations, in the same
+// order, of the scalar code below: the same terms, bit for bit.
+class Tetrahedra_pair_sum
 {
 public:
-  static constexpr std::size_t batch = 128;
-  static constexpr std::size_t lanes = 8;
+  static constexpr std::size_t lanes = 4;
 
-  explicit Tetrahedra_batch_sum(double cx, double cy, double cz) : m_cx(cx), m_cy(cy), m_cz(cz)
+  Tetrahedra_pair_sum(double cx, double cy, double cz) : m_c{cx, cy, cz}
   {
-    for(std::size_t l = 0; l < lanes; ++l) m_sum[l] = m_compensation[l] = m_permanent[l] = 0;
+#if defined(__SSE2__)
+    m_cx = _mm_set1_pd(cx);
+    m_cy = _mm_set1_pd(cy);
+    m_cz = _mm_set1_pd(cz);
+    m_s[0] = m_s[1] = m_e[0] = m_e[1] = m_q[0] = m_q[1] = _mm_setzero_pd();
+#else
+    for(std::size_t l = 0; l < lanes; ++l) m_s[l] = m_e[l] = m_q[l] = 0;
+#endif
   }
 
-  void add(double x1, double y1, double z1, double x2, double y2, double z2, double x3, double y3, double z3)
+  // `corners(i, k)` is a pointer to the 3 coordinates of corner k of
+  // triangle i < n.
+  template <typename Corners>
+  void add(std::size_t n, const Corners& corners)
   {
-    const std::size_t k = m_fill;
-    m_x1[k] = x1; m_y1[k] = y1; m_z1[k] = z1;
-    m_x2[k] = x2; m_y2[k] = y2; m_z2[k] = z2;
-    m_x3[k] = x3; m_y3[k] = y3; m_z3[k] = z3;
-    if(++m_fill == batch)
-      flush();
-  }
-
-  // A full batch of triangles given as indices into flat points (only
-  // when no partial batch is pending).
-  template <typename Point, typename Triangle>
-  void add_batch(const Point* points, const Triangle* triangles)
-  {
-    for(std::size_t k = 0; k < batch; ++k)
+    std::size_t i = 0;
+    for(; i + 4 <= n; i += 4)
     {
-      const auto& a = points[triangles[k][0]];
-      const auto& b = points[triangles[k][1]];
-      const auto& c = points[triangles[k][2]];
-      m_x1[k] = a[0]; m_y1[k] = a[1]; m_z1[k] = a[2];
-      m_x2[k] = b[0]; m_y2[k] = b[1]; m_z2[k] = b[2];
-      m_x3[k] = c[0]; m_y3[k] = c[1]; m_z3[k] = c[2];
+      add_pair(0, corners(i, 0), corners(i, 1), corners(i, 2), corners(i + 1, 0), corners(i + 1, 1), corners(i + 1, 2));
+      add_pair(1, corners(i + 2, 0), corners(i + 2, 1), corners(i + 2, 2), corners(i + 3, 0), corners(i + 3, 1),
+               corners(i + 3, 2));
     }
-    m_fill = batch;
-    flush();
+    for(; i < n; ++i) // degenerate triangles at c as partners: zero terms, zero permanents
+      add_pair(0, corners(i, 0), corners(i, 1), corners(i, 2), m_c, m_c, m_c);
+    m_count += n;
   }
 
-  // The compensated sum, the sum of the permanents and the term count.
-  void finish(double& sum, double& permanents, std::size_t& count)
+  // The compensated sum, the sum of the permanents and the number of terms
+  // the bound must count (the terms plus the lanes merged at the end).
+  void finish(double& sum, double& permanents, std::size_t& count) const
   {
-    for(std::size_t k = m_fill; k < batch; ++k) // pad with degenerate triangles at c: zero terms
-    {
-      m_x1[k] = m_x2[k] = m_x3[k] = m_cx;
-      m_y1[k] = m_y2[k] = m_y3[k] = m_cy;
-      m_z1[k] = m_z2[k] = m_z3[k] = m_cz;
-    }
-    const std::size_t real = m_count + m_fill;
-    if(m_fill != 0)
-      flush();
+    double s[lanes], e[lanes], q[lanes];
+#if defined(__SSE2__)
+    _mm_storeu_pd(s, m_s[0]);
+    _mm_storeu_pd(s + 2, m_s[1]);
+    _mm_storeu_pd(e, m_e[0]);
+    _mm_storeu_pd(e + 2, m_e[1]);
+    _mm_storeu_pd(q, m_q[0]);
+    _mm_storeu_pd(q + 2, m_q[1]);
+#else
+    for(std::size_t l = 0; l < lanes; ++l) s[l] = m_s[l], e[l] = m_e[l], q[l] = m_q[l];
+#endif
     Accurate_sum<double> total;
     double compensation = 0, permanent = 0;
     for(std::size_t l = 0; l < lanes; ++l)
     {
-      total.add(m_sum[l]);
-      compensation += m_compensation[l];
-      permanent += m_permanent[l];
+      total.add(s[l]);
+      compensation += e[l];
+      permanent += q[l];
     }
     total.add(compensation);
     sum = total.result();
     permanents = permanent;
-    count = real + lanes;
+    count = m_count + lanes;
   }
 
 private:
-  void flush()
+#if defined(__SSE2__)
+  static __m128d gather(const double* a, const double* b) { return _mm_loadh_pd(_mm_load_sd(a), b); }
+  static __m128d abs(__m128d v) { return _mm_andnot_pd(_mm_set1_pd(-0.0), v); }
+
+  void add_pair(int chain, const double* a1, const double* a2, const double* a3, const double* b1, const double* b2,
+                const double* b3)
   {
-    alignas(16) double term[batch], permanent[batch];
-    for(std::size_t k = 0; k < batch; ++k)
-    {
-      const double ax = m_x2[k] - m_x1[k], ay = m_y2[k] - m_y1[k], az = m_z2[k] - m_z1[k];
-      const double bx = m_x3[k] - m_x1[k], by = m_y3[k] - m_y1[k], bz = m_z3[k] - m_z1[k];
-      const double dx = m_x1[k] - m_cx, dy = m_y1[k] - m_cy, dz = m_z1[k] - m_cz;
-      // |u| * |v| == |u * v| exactly, so the permanent reuses the products.
-      const double p1 = ay * bz, p2 = az * by, p3 = az * bx, p4 = ax * bz, p5 = ax * by, p6 = ay * bx;
-      term[k] = (p1 - p2) * dx + (p3 - p4) * dy + (p5 - p6) * dz;
-      permanent[k] = (std::abs(p1) + std::abs(p2)) * std::abs(dx) + (std::abs(p3) + std::abs(p4)) * std::abs(dy) +
-                     (std::abs(p5) + std::abs(p6)) * std::abs(dz);
-    }
-    for(std::size_t k = 0; k < batch; k += lanes)
-      for(std::size_t l = 0; l < lanes; ++l)
-      {
-        // Knuth's TwoSum per lane (no -ffast-math: it would drop e).
-        const double x = term[k + l];
-        const double t = m_sum[l] + x;
-        const double z = t - m_sum[l];
-        const double e = (m_sum[l] - (t - z)) + (x - z);
-        m_sum[l] = t;
-        m_compensation[l] += e;
-        m_permanent[l] += permanent[k + l];
-      }
-    m_count += m_fill;
-    m_fill = 0;
+    const __m128d x1 = gather(a1, b1), y1 = gather(a1 + 1, b1 + 1), z1 = gather(a1 + 2, b1 + 2);
+    const __m128d ax = _mm_sub_pd(gather(a2, b2), x1), ay = _mm_sub_pd(gather(a2 + 1, b2 + 1), y1),
+                  az = _mm_sub_pd(gather(a2 + 2, b2 + 2), z1);
+    const __m128d bx = _mm_sub_pd(gather(a3, b3), x1), by = _mm_sub_pd(gather(a3 + 1, b3 + 1), y1),
+                  bz = _mm_sub_pd(gather(a3 + 2, b3 + 2), z1);
+    const __m128d dx = _mm_sub_pd(x1, m_cx), dy = _mm_sub_pd(y1, m_cy), dz = _mm_sub_pd(z1, m_cz);
+    const __m128d p1 = _mm_mul_pd(ay, bz), p2 = _mm_mul_pd(az, by), p3 = _mm_mul_pd(az, bx),
+                  p4 = _mm_mul_pd(ax, bz), p5 = _mm_mul_pd(ax, by), p6 = _mm_mul_pd(ay, bx);
+    const __m128d term = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_sub_pd(p1, p2), dx), _mm_mul_pd(_mm_sub_pd(p3, p4), dy)),
+                                    _mm_mul_pd(_mm_sub_pd(p5, p6), dz));
+    const __m128d permanent =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_add_pd(abs(p1), abs(p2)), abs(dx)),
+                              _mm_mul_pd(_mm_add_pd(abs(p3), abs(p4)), abs(dy))),
+                   _mm_mul_pd(_mm_add_pd(abs(p5), abs(p6)), abs(dz)));
+    // Knuth's TwoSum (no -ffast-math: it would drop e).
+    const __m128d s = m_s[chain];
+    const __m128d t = _mm_add_pd(s, term);
+    const __m128d z = _mm_sub_pd(t, s);
+    const __m128d e = _mm_add_pd(_mm_sub_pd(s, _mm_sub_pd(t, z)), _mm_sub_pd(term, z));
+    m_s[chain] = t;
+    m_e[chain] = _mm_add_pd(m_e[chain], e);
+    m_q[chain] = _mm_add_pd(m_q[chain], permanent);
   }
 
-  double m_cx, m_cy, m_cz;
-  alignas(16) double m_x1[batch], m_y1[batch], m_z1[batch], m_x2[batch], m_y2[batch], m_z2[batch], m_x3[batch],
-      m_y3[batch], m_z3[batch];
-  alignas(16) double m_sum[lanes], m_compensation[lanes], m_permanent[lanes];
-  std::size_t m_fill = 0, m_count = 0;
+  __m128d m_cx, m_cy, m_cz;
+  __m128d m_s[2], m_e[2], m_q[2];
+#else
+  void add_one(std::size_t l, const double* a, const double* b, const double* c)
+  {
+    const double ax = b[0] - a[0], ay = b[1] - a[1], az = b[2] - a[2];
+    const double bx = c[0] - a[0], by = c[1] - a[1], bz = c[2] - a[2];
+    const double dx = a[0] - m_c[0], dy = a[1] - m_c[1], dz = a[2] - m_c[2];
+    const double p1 = ay * bz, p2 = az * by, p3 = az * bx, p4 = ax * bz, p5 = ax * by, p6 = ay * bx;
+    const double term = (p1 - p2) * dx + (p3 - p4) * dy + (p5 - p6) * dz;
+    const double permanent = (std::abs(p1) + std::abs(p2)) * std::abs(dx) + (std::abs(p3) + std::abs(p4)) * std::abs(dy) +
+                             (std::abs(p5) + std::abs(p6)) * std::abs(dz);
+    const double t = m_s[l] + term;
+    const double z = t - m_s[l];
+    m_e[l] += (m_s[l] - (t - z)) + (term - z);
+    m_s[l] = t;
+    m_q[l] += permanent;
+  }
+  void add_pair(int chain, const double* a1, const double* a2, const double* a3, const double* b1, const double* b2,
+                const double* b3)
+  {
+    add_one(std::size_t(2 * chain), a1, a2, a3);
+    add_one(std::size_t(2 * chain + 1), b1, b2, b3);
+  }
+
+  double m_s[lanes], m_e[lanes], m_q[lanes];
+#endif
+  double m_c[3];
+  std::size_t m_count = 0;
 };
 
 // The decision of the double path: the compensated sum `s` of n terms whose
@@ -170,7 +199,7 @@ double certified_or_exact_sum(double s, double permanents, std::size_t n, double
 {
   const double eps = std::numeric_limits<double>::epsilon() / 2;
   const double ne = double(n) * eps;
-  // (n counts the lanes of Tetrahedra_batch_sum too.)
+  // (n counts the lanes of Tetrahedra_pair_sum too.)
   // |term_i| <= (1 + 3 eps) permanent_i, so the permanents also bound the
   // terms' magnitudes in the summation error.  The bound is itself computed
   // in double: inflate it by (1 + 4 n eps) for the rounding of the running
@@ -203,13 +232,30 @@ double sum_of_signed_tetrahedra(const GeomTraits& gt,
   const auto y = gt.compute_y_3_object();
   const auto z = gt.compute_z_3_object();
 
-  auto batches = std::make_unique<Tetrahedra_batch_sum>(c.x, c.y, c.z);
+  // The traversal only copies each triangle's 9 coordinates into a small
+  // buffer (contiguous stores that stay in L1); the pair kernel then runs
+  // over the buffer.
+  constexpr std::size_t batch = 256;
+  std::unique_ptr<double[]> buffer(new double[9 * batch]);
+  double* const b = buffer.get();
+  std::size_t fill = 0;
+  Tetrahedra_pair_sum sum(c.x, c.y, c.z);
+  const auto corners = [b](std::size_t i, int k) { return b + 9 * i + 3 * k; };
   for_each_triangle([&](const Point_3& t1, const Point_3& t2, const Point_3& t3) {
-    batches->add(x(t1), y(t1), z(t1), x(t2), y(t2), z(t2), x(t3), y(t3), z(t3));
+    double* q = b + 9 * fill;
+    q[0] = x(t1); q[1] = y(t1); q[2] = z(t1);
+    q[3] = x(t2); q[4] = y(t2); q[5] = z(t2);
+    q[6] = x(t3); q[7] = y(t3); q[8] = z(t3);
+    if(++fill == batch)
+    {
+      sum.add(batch, corners);
+      fill = 0;
+    }
   });
+  sum.add(fill, corners);
   double s, permanents;
   std::size_t n;
-  batches->finish(s, permanents, n);
+  sum.finish(s, permanents, n);
   return certified_or_exact_sum(s, permanents, n, c.x, c.y, c.z, [&](const auto& f) {
     for_each_triangle([&](const Point_3& t1, const Point_3& t2, const Point_3& t3) {
       f(x(t1), y(t1), z(t1), x(t2), y(t2), z(t2), x(t3), y(t3), z(t3));
@@ -223,23 +269,14 @@ template <typename PointArray, typename TriangleArray>
 double sum_of_signed_tetrahedra_of_arrays(const PointArray& points, const TriangleArray& triangles, double cx,
                                           double cy, double cz)
 {
-  auto batches = std::make_unique<Tetrahedra_batch_sum>(cx, cy, cz);
   const auto* p = points.data();
   const auto* t = triangles.data();
-  const std::size_t n_triangles = triangles.size(), batch = Tetrahedra_batch_sum::batch;
-  std::size_t i = 0;
-  for(; i + batch <= n_triangles; i += batch)
-    batches->add_batch(p, t + i); // the whole batch in one call: no per-triangle bookkeeping
-  for(; i < n_triangles; ++i)
-  {
-    const auto& a = p[t[i][0]];
-    const auto& b = p[t[i][1]];
-    const auto& c = p[t[i][2]];
-    batches->add(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]);
-  }
+  Tetrahedra_pair_sum sum(cx, cy, cz);
+  // Straight from the index array: no copy of the coordinates.
+  sum.add(triangles.size(), [&](std::size_t i, int k) { return &p[t[i][k]][0]; });
   double s, permanents;
   std::size_t n;
-  batches->finish(s, permanents, n);
+  sum.finish(s, permanents, n);
   return certified_or_exact_sum(s, permanents, n, cx, cy, cz, [&](const auto& f) {
     for(const auto& t : triangles)
     {

@@ -31,10 +31,14 @@ void for_each_closed_mesh_triangle(const TriangleMesh& mesh, const std::string& 
   std::size_t face_number = 0;
   for(const auto face : faces(mesh))
   {
+    // h2 from prev(h0), not next(h1): with Surface_mesh's halfedge records
+    // (next and prev side by side) h1 and h2 are then two independent loads
+    // after h0 instead of a chain of three dependent ones (as PMP::volume
+    // does).  next(h1) == prev(h0) holds exactly for a face of 3 halfedges.
     const halfedge_descriptor h0 = halfedge(face, mesh);
     const halfedge_descriptor h1 = next(h0, mesh);
-    const halfedge_descriptor h2 = next(h1, mesh);
-    if(next(h2, mesh) != h0)
+    const halfedge_descriptor h2 = prev(h0, mesh);
+    if(next(h1, mesh) != h2)
       throw Non_triangle_face_error(mesh_name + ": face #" + std::to_string(face_number) +
                                     " is not a triangle (triangulate the mesh first, e.g. with "
                                     "PMP::triangulate_faces)");
