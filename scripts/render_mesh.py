@@ -7,7 +7,7 @@ the set on the domain boundary) and shaded by their normal; crease polylines
 can be drawn on top.
 
   /usr/bin/python3 scripts/render_mesh.py MESH.ply OUT.png [--creases F] [--corners F]
-                   [--view ELEV,AZIM] [--up x|y|z]
+                   [--view ELEV,AZIM] [--up x|y|z] [--edges]
 """
 import argparse
 
@@ -84,6 +84,7 @@ def main():
     parser.add_argument("--corners")
     parser.add_argument("--view", default="25,-60")
     parser.add_argument("--up", default="z", choices="xyz", help="the axis drawn upwards")
+    parser.add_argument("--edges", action="store_true", help="draw triangle edges (to judge quality)")
     args = parser.parse_args()
     # A cyclic permutation of the axes that puts `up` last (keeps orientation).
     order = {"x": [1, 2, 0], "y": [2, 0, 1], "z": [0, 1, 2]}[args.up]
@@ -105,7 +106,8 @@ def main():
         colours.append(np.clip(base * shade, 0, 1))
     fig = plt.figure(figsize=(8, 8))
     ax = fig.add_subplot(projection="3d")
-    ax.add_collection3d(Poly3DCollection(polygons, facecolors=colours, edgecolors="none"))
+    edges = (0.1, 0.1, 0.1, 0.6) if args.edges else "none"
+    ax.add_collection3d(Poly3DCollection(polygons, facecolors=colours, edgecolors=edges, linewidths=0.2))
     if args.creases:
         lines = [line[:, order] for line in read_polylines(args.creases)]
         ax.add_collection3d(Line3DCollection(lines, colors="k", linewidths=1.5))
