@@ -24,15 +24,17 @@ def read_mesh(path):
         first = f.readline().strip()
         labels = None
         if first == "OFF":
-            line = f.readline().split()
-            while not line or line[0].startswith("#"):
-                line = f.readline().split()
-            nv, nf = int(line[0]), int(line[1])
-            points = np.array([list(map(float, f.readline().split()[:3])) for _ in range(nv)])
+            # Token-based: CGAL's writer puts a blank line after the counts.
+            tokens = [t for line in f for t in line.split("#")[0].split()]
+            nv, nf = int(tokens[0]), int(tokens[1])
+            pos = 3
+            points = np.array(tokens[pos : pos + 3 * nv], dtype=float).reshape(nv, 3)
+            pos += 3 * nv
             faces = []
             for _ in range(nf):
-                t = f.readline().split()
-                faces.append(list(map(int, t[1 : 1 + int(t[0])])))
+                n = int(tokens[pos])
+                faces.append([int(t) for t in tokens[pos + 1 : pos + 1 + n]])
+                pos += 1 + n
             return points, faces, labels
         if first != "ply":
             raise SystemExit(f"{path}: not an OFF or PLY file")
