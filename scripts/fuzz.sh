@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses of test/fuzz with clang (ASan + UBSan) in
-# build-fuzz/ and runs each for SECONDS seconds (default 30).  Fails if any
+# build-fuzz/ and runs each for SECONDS seconds (default 30), as many at a
+# time as there are cores (BISO_FUZZ_JOBS).  Fails if any
 # harness finds a crash, a sanitizer report, an input slower than 25 s, an
 # allocation over 64 MB (a size taken from a header count), or more than
 # 2 GB of memory.  Findings are kept in build-fuzz/artifacts/.
@@ -32,22 +33,36 @@ rm -rf "$build/seeds"
 /usr/bin/env python3 test/fuzz/make_seed_corpus.py "$build/seeds"
 mkdir -p "$build/artifacts"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
-failed=""
-start=$(date +%s)
-for target in $targets; do
+# The harnesses run $jobs at a time (one core each): libFuzzer is single-threaded.
+jobs="${BISO_FUZZ_JOBS:-$(nproc)}"
+run_one() {
+  local target="$1" log="$build/artifacts/$1.log"
   mkdir -p "$build/corpus/$target"
-  log="$build/artifacts/$target.log"
-  echo "== $target: ${seconds} s"
   if "$build/test/fuzz/$target" -max_total_time="$seconds" -rss_limit_mb=2048 -malloc_limit_mb=64 -timeout=25 \
        -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" \
        "$build/corpus/$target" "$build/seeds/$target" > "$log" 2>&1; then
-    grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$log" | tr '\n' ' '
-    echo
+    echo "== $target, ${seconds} s: $(grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$log" | tr '\n' ' ')"
   else
-    echo "FINDING in $target (log: $log):"
+    echo "== $target: FINDING (log: $log):"
     grep -E "ERROR|SUMMARY|==[0-9]+==|Test unit written|check failed|timeout|out-of-memory|malloc" "$log" | head -20
-    failed="$failed $target"
+    touch "$build/artifacts/$target.failed"
   fi
+}
+rm -f "$build"/artifacts/*.failed
+start=$(date +%s)
+running=0
+for target in $targets; do
+  run_one "$target" &
+  running=$((running + 1))
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait
+failed=""
+for target in $targets; do
+  if [ -e "$build/artifacts/$target.failed" ]; then failed="$failed $target"; fi
 done
 echo "fuzzing took $(( $(date +%s) - start )) s"
 if [ -n "$failed" ]; then

@@ -6,6 +6,7 @@ packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmp
           pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools python3-venv  # Python module
           clang libclang-rt-14-dev   # libFuzzer harnesses (scripts/fuzz.sh)
           libopenmpi-dev openmpi-bin # distributed drivers (mpirun)
+          doxygen                    # the manual (CTest doc_builds_without_warnings)
           libopenvdb-dev libboost-iostreams-dev)  # OpenVDB: only a rival measured in a benchmark
 missing=()
 for p in "${packages[@]}"; do

@@ -7,7 +7,11 @@ the set on the domain boundary) and shaded by their normal; crease polylines
 can be drawn on top.
 
   /usr/bin/python3 scripts/render_mesh.py MESH.ply OUT.png [--creases F] [--corners F]
-                   [--view ELEV,AZIM] [--up x|y|z] [--edges]
+                   [--view ELEV,AZIM] [--up x|y|z] [--size INCHES] [--zoom Z] [--title T]
+  /usr/bin/python3 scripts/render_mesh.py --points SAMPLES.pts OUT.png [...]
+
+With --points the input is a point set (`x y z [nx ny nz]` lines, as `contour`
+reads), drawn as dots; --edges draws the mesh edges (to show the facets).
 """
 import argparse
 
@@ -24,17 +28,17 @@ def read_mesh(path):
         first = f.readline().strip()
         labels = None
         if first == "OFF":
-            # Token-based: CGAL's writer puts a blank line after the counts.
-            tokens = [t for line in f for t in line.split("#")[0].split()]
-            nv, nf = int(tokens[0]), int(tokens[1])
-            pos = 3
-            points = np.array(tokens[pos : pos + 3 * nv], dtype=float).reshape(nv, 3)
-            pos += 3 * nv
+            line = f.readline().split()
+            while not line or line[0].startswith("#"):
+                line = f.readline().split()
+            nv, nf = int(line[0]), int(line[1])
+            # CGAL's writer puts a blank line after the counts: skip blank lines.
+            rows = (r for r in (line.split() for line in f) if r and not r[0].startswith("#"))
+            points = np.array([list(map(float, next(rows)[:3])) for _ in range(nv)])
             faces = []
             for _ in range(nf):
-                n = int(tokens[pos])
-                faces.append([int(t) for t in tokens[pos + 1 : pos + 1 + n]])
-                pos += 1 + n
+                t = next(rows)
+                faces.append(list(map(int, t[1 : 1 + int(t[0])])))
             return points, faces, labels
         if first != "ply":
             raise SystemExit(f"{path}: not an OFF or PLY file")
@@ -80,17 +84,27 @@ def read_polylines(path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("mesh")
+    parser.add_argument("mesh", nargs="?")
     parser.add_argument("png")
     parser.add_argument("--creases")
     parser.add_argument("--corners")
     parser.add_argument("--view", default="25,-60")
     parser.add_argument("--up", default="z", choices="xyz", help="the axis drawn upwards")
-    parser.add_argument("--edges", action="store_true", help="draw triangle edges (to judge quality)")
+    parser.add_argument("--points", help="draw this point set instead of a mesh")
+    parser.add_argument("--edges", action="store_true", help="draw the mesh edges")
+    parser.add_argument("--size", type=float, default=8, help="figure size in inches (100 dpi)")
+    parser.add_argument("--title")
+    parser.add_argument("--zoom", type=float, default=1.0, help="magnify the scene (matplotlib >= 3.6)")
     args = parser.parse_args()
+    if (args.mesh is None) == (args.points is None):
+        parser.error("give either a MESH or --points")
     # A cyclic permutation of the axes that puts `up` last (keeps orientation).
     order = {"x": [1, 2, 0], "y": [2, 0, 1], "z": [0, 1, 2]}[args.up]
-    points, faces, labels = read_mesh(args.mesh)
+    if args.points:
+        points = np.array([list(map(float, line.split()[:3])) for line in open(args.points) if line.split()])
+        faces, labels = [], None
+    else:
+        points, faces, labels = read_mesh(args.mesh)
     points = points[:, order]
     polygons = [points[f] for f in faces]
     palette = plt.get_cmap("tab10")
@@ -106,10 +120,15 @@ def main():
         label = labels[i] if labels else 0
         base = np.array([0.6, 0.6, 0.6]) if label < 0 else np.array(palette(label % 10)[:3])
         colours.append(np.clip(base * shade, 0, 1))
-    fig = plt.figure(figsize=(8, 8))
+    fig = plt.figure(figsize=(args.size, args.size))
     ax = fig.add_subplot(projection="3d")
-    edges = (0.1, 0.1, 0.1, 0.6) if args.edges else "none"
-    ax.add_collection3d(Poly3DCollection(polygons, facecolors=colours, edgecolors=edges, linewidths=0.2))
+    if args.points:
+        ax.scatter(points[:, 0], points[:, 1], points[:, 2], color="#1f77b4", s=1.5, depthshade=True, linewidths=0)
+    else:
+        edges = dict(edgecolors=(0, 0, 0, 0.35), linewidths=0.2) if args.edges else dict(edgecolors="none")
+        ax.add_collection3d(Poly3DCollection(polygons, facecolors=colours, **edges))
+    if args.title:
+        ax.set_title(args.title)
     if args.creases:
         lines = [line[:, order] for line in read_polylines(args.creases)]
         ax.add_collection3d(Line3DCollection(lines, colors="k", linewidths=1.5))
@@ -117,14 +136,20 @@ def main():
         c = np.array([list(map(float, line.split())) for line in open(args.corners) if line.split()])
         if c.size:
             c = c[:, order]
-            ax.scatter(c[:, 0], c[:, 1], c[:, 2], color="red", s=25, depthshade=False)
+            # Drawn last and on top (matplotlib's depth sort would hide the
+            # corners, which lie on the surface, behind its polygons).
+            ax.computed_zorder = False
+            ax.scatter(c[:, 0], c[:, 1], c[:, 2], color="red", s=30, depthshade=False, zorder=10)
     lo, hi = points.min(0), points.max(0)
     centre, half = (lo + hi) / 2, (hi - lo).max() / 2
     for axis, set_lim in zip(range(3), (ax.set_xlim, ax.set_ylim, ax.set_zlim)):
         set_lim(centre[axis] - half, centre[axis] + half)
     elev, azim = map(float, args.view.split(","))
     ax.view_init(elev=elev, azim=azim)
-    ax.set_box_aspect((1, 1, 1))
+    if args.zoom != 1.0:
+        ax.set_box_aspect((1, 1, 1), zoom=args.zoom)
+    else:
+        ax.set_box_aspect((1, 1, 1))
     ax.set_axis_off()
     fig.savefig(args.png, dpi=100, bbox_inches="tight")
 

@@ -11,7 +11,7 @@ jobs="$(nproc)"
 # -O1: the sanitizers need no more, and it compiles the CGAL-heavy
 # translation units faster than -O3.
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DBISO_SANITIZE=ON -DBISO_BUILD_TESTS=ON \
-      -DBISO_BUILD_EXAMPLES=ON -DBISO_BUILD_BENCHMARKS=OFF -DBISO_BUILD_PYTHON=OFF -DBISO_WITH_MPI=OFF
+      -DBISO_BUILD_EXAMPLES=ON -DBISO_BUILD_BENCHMARKS=OFF -DBISO_BUILD_PYTHON=OFF -DBISO_WITH_MPI=OFF -DBISO_BUILD_DOC=OFF
 cmake --build build-sanitize -j "$jobs"
 cd build-sanitize
 # detect_leaks: CGAL and TBB keep a few process-lifetime singletons; leaks are

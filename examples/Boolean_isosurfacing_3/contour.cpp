@@ -1,6 +1,6 @@
 // contour: oriented (or unoriented) point samples -> closed triangle mesh,
 // by Hoppe's tangent-plane signed distance and Marching Cubes
-// (seeds/contour_tracing_signed_distance.txt).
+// (the contour-tracing assignment, [ContourTracing] in the manual's references).
 //
 //   contour [FILE|-] [-o out.tris|out.off|out.ply|out.obj|out.stl] [--cell r | --cells N] [--k K]
 //           [--rho R] [--delta D] [--max-jump J]

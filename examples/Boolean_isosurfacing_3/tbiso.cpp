@@ -21,6 +21,7 @@
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_by_slabs.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_to_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/crease_preserving_smoothing.h>
+#include "tool_support.h"
 #include <CGAL/Boolean_isosurfacing_3/extract_crease_network.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -971,6 +972,11 @@ int main(int argc, char** argv)
     if(options.threads > 0)
       limit.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
 #endif
+    // Output paths are checked before any computation, so that an unwritable
+    // one costs a second, not the whole extraction.
+    for(const std::string* path : {&options.output, &options.creases_file, &options.corners_file})
+      if(!path->empty())
+        biso_tools::check_output_file(*path);
     if(!options.demo_dir.empty())
       return run_demo(options);
     if(options.out_of_core)

@@ -212,6 +212,29 @@ TEST_F(TbisoTool, DemoWritesThreeReadableFiles)
     EXPECT_EQ(c.size(), 3u);
 }
 
+// An unwritable output (-o, --creases, --corners) is found before any
+// computation: one line on stderr, exit 1, nothing on stdout; a probe does
+// not leave a file behind.
+TEST_F(TbisoTool, UnwritableOutputIsRefusedBeforeComputing)
+{
+  const std::string nowhere = file("no/such/dir/x");
+  for(const std::string flag : {"-o " + nowhere + ".ply", "--creases " + nowhere + ".txt",
+                                "--corners " + nowhere + ".xyz", "-o " + m_dir + "/dir.ply"})
+  {
+    std::filesystem::create_directory(file("dir.ply"));
+    const auto start = std::chrono::steady_clock::now();
+    const Result r = run("--grid 257 --field sphere:0,0,0,0.5 --smooth 50 -o " + file("ok.ply") + " " + flag);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.status, 1) << flag;
+    EXPECT_TRUE(r.out.empty()) << flag << "\n" << r.out;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.err.find("cannot write") != std::string::npos || r.err.find("is a directory") != std::string::npos)
+        << r.err;
+    EXPECT_LT(seconds, 5.0) << flag; // the 257^3 extraction itself takes longer than this
+    EXPECT_FALSE(std::filesystem::exists(file("ok.ply"))) << flag;
+  }
+}
+
 // The box [-0.5, 2] x [-0.25, 2] x [-0.75, 2] cut by the domain [-1, 1]^3:
 // its faces inside the domain lie on grid planes (spacing 0.25), so sampling
 // is exact and so is the volume, 1.5 * 1.25 * 1.75.

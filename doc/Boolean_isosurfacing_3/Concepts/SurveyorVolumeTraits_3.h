@@ -14,8 +14,9 @@ function with a traits class that has exactly the members below.
 When the named parameter `check_self_intersections` is passed, the traits must
 also meet the requirements of `CGAL::Polygon_mesh_processing::does_self_intersect()`.
 
-\cgalHasModel All models of `Kernel` (`CGAL::Exact_predicates_inexact_constructions_kernel`,
-`CGAL::Exact_predicates_exact_constructions_kernel`, `CGAL::Simple_cartesian<double>`, ...)
+\cgalHasModelsBegin
+\cgalHasModels{All models of `Kernel`: `CGAL::Exact_predicates_inexact_constructions_kernel`\, `CGAL::Exact_predicates_exact_constructions_kernel`\, `CGAL::Simple_cartesian<double>`\, ...}
+\cgalHasModelsEnd
 */
 class SurveyorVolumeTraits_3
 {
@@ -25,9 +26,11 @@ public:
   /// The point type of the mesh (the value type of its vertex point map).
   typedef unspecified_type Point_3;
 
-  /// `FT operator()(const Point_3& p) const`: the x (y, z) coordinate of `p`.
+  /// `FT operator()(const Point_3& p) const`: the x coordinate of `p`.
   typedef unspecified_type Compute_x_3;
+  /// The same for the y coordinate.
   typedef unspecified_type Compute_y_3;
+  /// The same for the z coordinate.
   typedef unspecified_type Compute_z_3;
   /// `Point_3 operator()(const FT& x, const FT& y, const FT& z) const`.
   typedef unspecified_type Construct_point_3;
@@ -35,9 +38,18 @@ public:
   /// the signed volume of the tetrahedron (p, q, r, s), positive when (p, q, r, s) is positively oriented.
   typedef unspecified_type Compute_volume_3;
 
+  /// \name Function objects
+  /// @{
+
+  /// returns a `Compute_x_3`.
   Compute_x_3 compute_x_3_object() const;
+  /// returns a `Compute_y_3`.
   Compute_y_3 compute_y_3_object() const;
+  /// returns a `Compute_z_3`.
   Compute_z_3 compute_z_3_object() const;
+  /// returns a `Construct_point_3`.
   Construct_point_3 construct_point_3_object() const;
+  /// returns a `Compute_volume_3`.
   Compute_volume_3 compute_volume_3_object() const;
+  /// @}
 };

@@ -974,13 +974,17 @@ public:
   /// \name Access
   /// @{
 
+  /// The number N of variables (meshes or fields).
   std::size_t number_of_variables() const { return m_number_of_variables; }
 
   /// The prime implicants, in canonical order.
   const std::vector<Term>& terms() const { return m_terms; }
+  /// The number of prime implicants.
   std::size_t number_of_terms() const { return m_terms.size(); }
 
+  /// true iff the function is constant false (no term).
   bool is_false() const { return m_terms.empty(); }
+  /// true iff the function is constant true (one empty term).
   bool is_true() const { return m_terms.size() == 1 && m_terms.front().literals() == 0; }
 
   /// The mask of the variables the function actually depends on.
@@ -990,6 +994,7 @@ public:
   /// regularized set can have a boundary face on variable `i`'s surface.
   bool depends_on(std::size_t i) const { return i < 64 && ((m_support >> i) & 1) != 0; }
 
+  /// How `to_string()` names the variables.
   Variable_naming naming() const { return m_naming; }
 
   /// The name `to_string()` uses for variable `i`.

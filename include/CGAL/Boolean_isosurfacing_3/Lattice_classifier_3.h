@@ -120,11 +120,20 @@ public:
    *         points of their `vertex_point` maps have `x()`, `y()`, `z()`
    *         convertible to double by `CGAL::to_double()`.
    *
-   * \param np optional named parameters:
-   *   - `Boolean_isosurfacing::parameters::progress(f)`: `f(double)` is called
-   *     with fractions in [0, 1], from the calling thread;
-   *   - `Boolean_isosurfacing::parameters::max_memory_bytes(n)`: refuse to
-   *     start when the estimated memory exceeds `n` (default 8 GiB).
+   * \param meshes the closed triangle meshes; bit m of a point's mask is mesh m
+   * \param lattice the lattice whose points are classified
+   * \param np an optional sequence of named parameters among the ones listed below
+   *
+   * \cgalNamedParamsBegin
+   *   \cgalParamNBegin{progress}
+   *     \cgalParamDescription{called with fractions in [0, 1], from the calling thread}
+   *     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{max_memory_bytes}
+   *     \cgalParamDescription{refuse to start when the estimated memory exceeds it (`Lattice_too_large_error`)}
+   *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+   *   \cgalParamNEnd
+   * \cgalNamedParamsEnd
    *
    * Coordinates are converted to double; the predicates are exact for those
    * doubles (so exact for `Epick` and `Simple_cartesian<double>` meshes).
@@ -207,7 +216,9 @@ public:
   /// \name Access
   /// @{
 
+  /// The classified lattice.
   const Regular_lattice_3& lattice() const { return m_lattice; }
+  /// The number of meshes (bits of a mask).
   std::size_t number_of_meshes() const { return m_number_of_meshes; }
 
   /// Bytes per lattice point of the masks: 1, 2, 4 or 8.
@@ -225,8 +236,10 @@ public:
     default: return m_masks64[linear_index];
     }
   }
+  /// The mask of lattice point (i, j, k).
   std::uint64_t mask(std::size_t i, std::size_t j, std::size_t k) const { return mask(m_lattice.linear_index(i, j, k)); }
 
+  /// true iff lattice point (i, j, k) is inside mesh `mesh`.
   bool is_inside(std::size_t mesh, std::size_t i, std::size_t j, std::size_t k) const
   {
     return ((mask(i, j, k) >> mesh) & 1) != 0;
@@ -292,6 +305,7 @@ public:
   /// Number of crossings on lattice edges along `axis` (crossings outside
   /// the lattice are not stored).
   std::size_t number_of_crossings(int axis) const { return m_crossings[axis].size(); }
+  /// The number of crossings of the meshes with lattice edges, all axes.
   std::size_t number_of_crossings() const
   {
     return m_crossings[0].size() + m_crossings[1].size() + m_crossings[2].size();

@@ -6,7 +6,7 @@
 
 // The signed distance of Hoppe, DeRose, Duchamp, McDonald and Stuetzle,
 // "Surface reconstruction from unorganized points" (SIGGRAPH 1992), as used by
-// seeds/contour_tracing_signed_distance.txt:
+// the contour-tracing assignment ([ContourTracing] in the manual's references):
 //
 //   f(p) = (p - o_i) . n_i,   i = the tangent plane whose centre o_i is nearest p,
 //
@@ -72,7 +72,8 @@ namespace Boolean_isosurfacing {
  * \tparam GeomTraits a CGAL kernel (`Point_3`, `Vector_3`, `FT` convertible
  *         to double); default `CGAL::Epick`.
  *
- * Named parameters of the constructor:
+ * Named parameters of the constructor (its reference lists them; the
+ * defaults are explained here):
  *  - `point_map`, `normal_map` (CGAL's): how to read a point and, when the
  *    map is given, its (roughly) outward normal, used only to orient n_i;
  *  - `Boolean_isosurfacing::parameters::number_of_neighbors(k)`: k, default 15
@@ -96,6 +97,8 @@ namespace Boolean_isosurfacing {
  * \throws Non_finite_value_error a NaN or infinite coordinate (names the index);
  * \throws Invalid_input_error fewer than k points, all points on one line or
  *         one plane (exact predicates decide this), k < 3, rho or delta < 0.
+ *
+ * \cgalModels{ContouringField_3}
  */
 template <typename GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel>
 class Tangent_plane_signed_distance_3
@@ -125,6 +128,35 @@ private:
   typedef CGAL::Orthogonal_k_neighbor_search<Search_traits, Distance, Splitter, Tree> Neighbor_search;
 
 public:
+  /*!
+   * builds the tangent planes of `points` and orients them.
+   *
+   * \param points the samples
+   * \param np an optional sequence of named parameters among the ones listed below
+   *
+   * \cgalNamedParamsBegin
+   *   \cgalParamNBegin{point_map}
+   *     \cgalParamDescription{the point of each element of `points`}
+   *     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Point_3`} \cgalParamDefault{`CGAL::Identity_property_map`}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{normal_map}
+   *     \cgalParamDescription{the (roughly) outward normal of each sample, used only to orient the tangent planes}
+   *     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Vector_3`} \cgalParamDefault{none: the planes are oriented along a minimum spanning tree}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{number_of_neighbors}
+   *     \cgalParamDescription{k, the size of each neighbourhood (the sample itself included), from 3 to 1024}
+   *     \cgalParamType{`std::size_t`} \cgalParamDefault{15}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{sampling_density}
+   *     \cgalParamDescription{Hoppe's rho, the radius of the largest disk on the surface free of samples}
+   *     \cgalParamType{`double`} \cgalParamDefault{1.5 sqrt(15 / k) times the median distance to the k-th nearest neighbour}
+   *   \cgalParamNEnd
+   *   \cgalParamNBegin{noise_level}
+   *     \cgalParamDescription{Hoppe's delta}
+   *     \cgalParamType{`double`} \cgalParamDefault{twice the median RMS distance of a neighbourhood to its PCA plane}
+   *   \cgalParamNEnd
+   * \cgalNamedParamsEnd
+   */
   template <typename PointRange, typename NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Tangent_plane_signed_distance_3(const PointRange& points,
                                            const NamedParameters& np = parameters::default_values())

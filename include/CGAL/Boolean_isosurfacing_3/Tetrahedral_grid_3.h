@@ -33,6 +33,8 @@ namespace Boolean_isosurfacing {
 /// `origin + (i * dx, j * dy, k * dz)`.
 ///
 /// \tparam GeomTraits a model of `Kernel` (only `Point_3` and its constructor are used)
+///
+/// \cgalModels{TetrahedralDomain_3}
 template <typename GeomTraits>
 class Tetrahedral_grid_3
 {

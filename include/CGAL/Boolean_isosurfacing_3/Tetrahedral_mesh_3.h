@@ -31,6 +31,8 @@ namespace Boolean_isosurfacing {
 ///    tetrahedra is a non-conforming mesh and is rejected.
 ///
 /// \tparam GeomTraits a model of `Kernel`
+///
+/// \cgalModels{TetrahedralDomain_3}
 template <typename GeomTraits>
 class Tetrahedral_mesh_3
 {

@@ -419,6 +419,23 @@ extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Sca
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// TBISO on an unstructured tetrahedral mesh; as the grid overload.
 /// `close_at_domain_boundary` closes the set on the boundary faces of the mesh.
+///
+/// \param mesh the tetrahedral mesh
+/// \param fields the values of the fields at the vertices of `mesh`
+/// \param expression the Boolean expression of the fields (variable i is field i)
+/// \param out the output soup (cleared first)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{close_at_domain_boundary}
+///     \cgalParamDescription{close the set on the boundary faces of the mesh, as if the expression were false outside}
+///     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called with the fraction done, from the calling thread}
+///     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename Point_3,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Boolean_isosurface_statistics

@@ -37,19 +37,14 @@
 namespace CGAL {
 namespace Boolean_isosurfacing {
 
-/// \ingroup PkgBooleanIsosurfacing3Concepts
-/// Concept `ScalarFieldSource`: `std::size_t number_of_fields()`, and
-/// `void read(std::size_t first_vertex, std::size_t count, std::vector<double>& values)`
-/// writing the values of vertices `[first_vertex, first_vertex + count)`,
-/// vertex-major.  Models: `IO::Raw_scalar_field_reader`, `Scalar_fields_source`.
-///
-/// Concept `BooleanIsosurfaceSink`: `void add_point(const std::array<double, 3>&)`
-/// and `void add_polygon(const std::size_t* vertices, std::size_t n, int field)`;
-/// points are numbered from 0 in the order they are added.  Models:
-/// `Boolean_isosurface_soup_sink`, `IO::Boolean_isosurface_PLY_stream`.
+// The concepts `ScalarFieldSource` (number_of_fields(), read(first_vertex,
+// count, values)) and `BooleanIsosurfaceSink` (add_point(p), add_polygon(
+// vertices, n, field)) are documented in doc/Boolean_isosurfacing_3/Concepts/.
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// A `ScalarFieldSource` over fields already in memory.
+///
+/// \cgalModels{ScalarFieldSource}
 class Scalar_fields_source
 {
 public:
@@ -67,6 +62,8 @@ private:
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// A `BooleanIsosurfaceSink` appending to a `Boolean_isosurface_soup`.
+///
+/// \cgalModels{BooleanIsosurfaceSink}
 template <typename Point_3>
 class Boolean_isosurface_soup_sink
 {
@@ -108,9 +105,27 @@ struct Boolean_isosurface_slab_statistics : Boolean_isosurface_statistics
 /// (and first touching) a fresh buffer per slab cost more than reading the
 /// file, on the virtual machine this was measured on.
 ///
-/// Named parameters: `slab_layers` (default 8), `close_at_domain_boundary`,
-/// `progress` (fraction of slabs done), and
-/// `CGAL::parameters::number_of_iterations` is *not* used.
+/// \param grid the regular grid
+/// \param source the fields, a model of `ScalarFieldSource`
+/// \param expression the Boolean expression of the fields
+/// \param sink receives the surface, a model of `BooleanIsosurfaceSink`
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \param slabs_in_flight the most slabs in memory at once (0: the default)
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{slab_layers}
+///     \cgalParamDescription{cube layers per slab (the unit of reading and of parallel work); 0 means the default}
+///     \cgalParamType{`std::size_t`} \cgalParamDefault{8}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{close_at_domain_boundary}
+///     \cgalParamDescription{close the set where it reaches the boundary of the grid, as if the expression were false outside}
+///     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{called with the fraction of slabs done, from the calling thread}
+///     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input_error if the source does not have the fields the
 /// expression names; Non_finite_value_error on a NaN or infinite value

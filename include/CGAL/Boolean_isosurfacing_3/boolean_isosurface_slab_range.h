@@ -265,9 +265,25 @@ inline void append_key(std::vector<std::uint64_t>& out, const Tbiso_vertex_key& 
 /// The result is `range`, with local vertex numbers; the polygons are those
 /// of the sequential extraction for these layers, in the same order.
 ///
-/// Named parameters: `close_at_domain_boundary` (the *grid's* boundary; the
-/// range's z boundaries are not closed), `slab_layers` (default 8; memory is
-/// a few slabs of field values plus the range's output).  Under
+/// \param grid the whole regular grid
+/// \param source the fields, a model of `ScalarFieldSource`
+/// \param expression the Boolean expression of the fields
+/// \param first_layer, last_layer the cube layers of the range
+/// \param range the output (overwritten)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{close_at_domain_boundary}
+///     \cgalParamDescription{close the set on the *grid's* boundary (the range's z boundaries are not closed)}
+///     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{slab_layers}
+///     \cgalParamDescription{cube layers read at a time: memory is a few slabs of field values plus the output of the range}
+///     \cgalParamType{`std::size_t`} \cgalParamDefault{8}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// Under
 /// `Parallel_tag` a window of slabs is evaluated in parallel; the output does
 /// not depend on the tag.
 ///

@@ -4,7 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_CONTOUR_POINT_SET_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_CONTOUR_POINT_SET_H
 
-// Contouring oriented point samples (seeds/contour_tracing_signed_distance.txt):
+// Contouring oriented point samples (the contour-tracing assignment, [ContourTracing] in the manual's references):
 // Hoppe's tangent-plane signed distance (Tangent_plane_signed_distance_3.h)
 // sampled at the vertices of a regular lattice and contoured with the
 // package's watertight Marching Cubes table, refined on ambiguous faces by the
@@ -410,7 +410,37 @@ std::pair<std::size_t, std::size_t> close_small_holes(PointOutRange& points, Tri
  *        (`push_back`, `size`, `operator[]`, `erase`, `insert`)
  * \param out_triangles a `std::vector`-like container of 3-index polygons
  *        (the same, and construction from `{a, b, c}`)
- * \param np `Boolean_isosurfacing::parameters::`
+ * \param np an optional sequence of named parameters among the ones listed
+ *        below, then the notes on them.
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{cell_size}
+ *     \cgalParamDescription{the lattice spacing r}
+ *     \cgalParamType{`double`} \cgalParamDefault{`field.default_cell_size()` when the field has it, else `field.sampling_density() / 3`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{cells_along_longest_side}
+ *     \cgalParamDescription{N: r = the longest side of the bounding box of the samples / N (ignored when `cell_size` is given)}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_jump}
+ *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
+ *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{minimum_closed_component_size}
+ *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
+ *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_hole_size}
+ *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
+ *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{lattice_margin}
+ *     \cgalParamDescription{cells added around the bounding box of the samples}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{ceil((rho + delta) / r) + 2}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * Notes on the named parameters (`Boolean_isosurfacing::parameters::`):
  *  - `cell_size(r)`: lattice spacing;
  *  - `cells_along_longest_side(N)`: r = longest bounding-box side / N
  *    (ignored when `cell_size` is given);
@@ -816,10 +846,62 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
  * Points (+ optional normals) to an outward-oriented triangle soup:
- * `Tangent_plane_signed_distance_3` then `contour_signed_distance`.
- * Named parameters: those of both (point_map, normal_map,
- * number_of_neighbors, sampling_density, noise_level, cell_size,
- * cells_along_longest_side, lattice_margin, geom_traits).
+ * `Tangent_plane_signed_distance_3` then `contour_signed_distance()`.
+ *
+ * \param points the samples
+ * \param out_points, out_triangles the soup is appended to them
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{point_map}
+ *     \cgalParamDescription{the point of each element of `points`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Point_3`} \cgalParamDefault{`CGAL::Identity_property_map`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{normal_map}
+ *     \cgalParamDescription{the (roughly) outward normal of each sample, used only to orient the tangent planes}
+ *     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Vector_3`} \cgalParamDefault{none: the planes are oriented along a minimum spanning tree}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_neighbors}
+ *     \cgalParamDescription{k, the size of each neighbourhood (the sample itself included), from 3 to 1024}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{15}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sampling_density}
+ *     \cgalParamDescription{Hoppe's rho, the radius of the largest disk on the surface free of samples}
+ *     \cgalParamType{`double`} \cgalParamDefault{1.5 sqrt(15 / k) times the median distance to the k-th nearest neighbour}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{noise_level}
+ *     \cgalParamDescription{Hoppe's delta}
+ *     \cgalParamType{`double`} \cgalParamDefault{twice the median RMS distance of a neighbourhood to its PCA plane}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a CGAL kernel} \cgalParamDefault{the kernel of the point type}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{cell_size}
+ *     \cgalParamDescription{the lattice spacing r}
+ *     \cgalParamType{`double`} \cgalParamDefault{rho / 3 with the *estimated* rho: about 1.25 times the mean sample spacing}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{cells_along_longest_side}
+ *     \cgalParamDescription{N: r = the longest side of the bounding box of the samples / N (ignored when `cell_size` is given)}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_jump}
+ *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
+ *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{minimum_closed_component_size}
+ *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
+ *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_hole_size}
+ *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
+ *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{lattice_margin}
+ *     \cgalParamDescription{cells added around the bounding box of the samples}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{ceil((rho + delta) / r) + 2}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  * \returns the contouring report.
  * \throws Empty_contour_error when no triangle comes out.
  */
@@ -840,11 +922,66 @@ Contouring_report contour_point_set(const PointRange& points, PointOutRange& out
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
  * As above, into a `MutableFaceGraph` (e.g. `Surface_mesh`), which is cleared
- * first.  When no cube was skipped the soup is a closed 2-manifold by
+ * first, with the same named parameters.  When no cube was skipped the soup is a closed 2-manifold by
  * construction (the table is watertight).  Skipped cubes leave holes, and two
  * holes can pinch a vertex (two skipped cubes diagonal around a lattice edge):
  * such vertices are duplicated (PMP::orient_polygon_soup) so that the mesh is
  * a valid, still consistently oriented, surface with border.
+ *
+ * \param points the samples
+ * \param mesh the output (cleared first)
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{point_map}
+ *     \cgalParamDescription{the point of each element of `points`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Point_3`} \cgalParamDefault{`CGAL::Identity_property_map`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{normal_map}
+ *     \cgalParamDescription{the (roughly) outward normal of each sample, used only to orient the tangent planes}
+ *     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `Vector_3`} \cgalParamDefault{none: the planes are oriented along a minimum spanning tree}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_neighbors}
+ *     \cgalParamDescription{k, the size of each neighbourhood (the sample itself included), from 3 to 1024}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{15}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sampling_density}
+ *     \cgalParamDescription{Hoppe's rho, the radius of the largest disk on the surface free of samples}
+ *     \cgalParamType{`double`} \cgalParamDefault{1.5 sqrt(15 / k) times the median distance to the k-th nearest neighbour}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{noise_level}
+ *     \cgalParamDescription{Hoppe's delta}
+ *     \cgalParamType{`double`} \cgalParamDefault{twice the median RMS distance of a neighbourhood to its PCA plane}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a CGAL kernel} \cgalParamDefault{the kernel of the point type}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{cell_size}
+ *     \cgalParamDescription{the lattice spacing r}
+ *     \cgalParamType{`double`} \cgalParamDefault{rho / 3 with the *estimated* rho}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{cells_along_longest_side}
+ *     \cgalParamDescription{N: r = the longest side of the bounding box of the samples / N (ignored when `cell_size` is given)}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_jump}
+ *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
+ *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{minimum_closed_component_size}
+ *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
+ *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_hole_size}
+ *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
+ *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{lattice_margin}
+ *     \cgalParamDescription{cells added around the bounding box of the samples}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{ceil((rho + delta) / r) + 2}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  */
 template <typename PointRange, typename PolygonMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,

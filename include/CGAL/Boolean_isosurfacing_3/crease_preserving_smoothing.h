@@ -340,22 +340,34 @@ void run_lambda_mu(PolygonMesh& mesh, double lambda, double mu, long long iterat
  * \param mesh the surface; its vertex points are replaced
  * \param lambda the positive factor, default `taubin_default_lambda` (0.6307)
  * \param mu the negative factor, default `taubin_default_mu` (-0.6732)
- * \param np an optional sequence of CGAL's named parameters among:
- *   - `number_of_iterations`: lambda|mu iterations (2 steps each), an
- *     integer >= 0, default `taubin_default_number_of_iterations` (10).
- *   - `edge_is_constrained_map`: a `ReadablePropertyMap` from
- *     `edge_descriptor` to `bool`, the crease edges, for example filled by
- *     `CGAL::Polygon_mesh_processing::detect_sharp_edges()` or by the
- *     extraction of a Boolean isosurface; default: no crease (only the border).
- *   - `vertex_is_constrained_map`: a `ReadablePropertyMap` from
- *     `vertex_descriptor` to `bool`, vertices that must not move, in addition
- *     to the corners found from the crease degree; default: none.
- *   - `vertex_point_map`: a `ReadWritePropertyMap` of the points; default
- *     `get(CGAL::vertex_point, mesh)`.
- *   - `vertex_index_map`: indices in [0, n) for the vertices; default the
- *     mesh's own, or a dynamic map.
- *   - `geom_traits`: a CGAL kernel (`Compute_x_3`...`Compute_z_3`,
- *     `Construct_point_3`); default the kernel of the point type.
+ * \param np an optional sequence of CGAL's named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{lambda|mu iterations (2 steps each), an integer >= 0}
+ *     \cgalParamType{an integer} \cgalParamDefault{`taubin_default_number_of_iterations` (10)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{the crease edges, for example filled by `CGAL::Polygon_mesh_processing::detect_sharp_edges()` or by the extraction of a Boolean isosurface}
+ *     \cgalParamType{a model of `ReadablePropertyMap` from `edge_descriptor` to `bool`} \cgalParamDefault{no crease (only the border)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_is_constrained_map}
+ *     \cgalParamDescription{vertices that must not move, in addition to the corners found from the crease degree}
+ *     \cgalParamType{a model of `ReadablePropertyMap` from `vertex_descriptor` to `bool`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the positions of the vertices, replaced by the smoothed ones}
+ *     \cgalParamType{a model of `ReadWritePropertyMap` from `vertex_descriptor` to the point type} \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{indices in [0, n) for the vertices}
+ *     \cgalParamType{a model of `ReadablePropertyMap` from `vertex_descriptor` to `std::size_t`} \cgalParamDefault{the mesh's own, or a dynamic map}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a CGAL kernel (`Compute_x_3`...`Compute_z_3`, `Construct_point_3`)} \cgalParamDefault{the kernel of the point type}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * \pre the smoothing is stable for uniform weights when
  *      |(1 - 2 lambda)(1 - 2 mu)| <= 1 (true for the defaults).
@@ -419,6 +431,36 @@ void smooth_with_creases(TriangleOrPolygonMesh& mesh, double lambda, double mu,
  * `smooth_with_creases()` with Taubin's default factors
  * (`taubin_default_lambda`, `taubin_default_mu`): for example
  * `smooth_with_creases(mesh, CGAL::parameters::edge_is_constrained_map(ecm))`.
+ *
+ * \param mesh the surface; its vertex points are replaced
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{lambda|mu iterations (2 steps each), an integer >= 0}
+ *     \cgalParamType{an integer} \cgalParamDefault{`taubin_default_number_of_iterations` (10)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{the crease edges}
+ *     \cgalParamType{a model of `ReadablePropertyMap` from `edge_descriptor` to `bool`} \cgalParamDefault{no crease (only the border)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_is_constrained_map}
+ *     \cgalParamDescription{vertices that must not move, in addition to the corners found from the crease degree}
+ *     \cgalParamType{a model of `ReadablePropertyMap` from `vertex_descriptor` to `bool`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the positions of the vertices, replaced by the smoothed ones}
+ *     \cgalParamType{a model of `ReadWritePropertyMap` from `vertex_descriptor` to the point type} \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{indices in [0, n) for the vertices}
+ *     \cgalParamType{a model of `ReadablePropertyMap` from `vertex_descriptor` to `std::size_t`} \cgalParamDefault{the mesh's own, or a dynamic map}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a CGAL kernel} \cgalParamDefault{the kernel of the point type}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  */
 template <typename TriangleOrPolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 void smooth_with_creases(TriangleOrPolygonMesh& mesh, const CGAL_NP_CLASS& np = parameters::default_values())
@@ -438,6 +480,29 @@ void smooth_with_creases(TriangleOrPolygonMesh& mesh, const CGAL_NP_CLASS& np = 
  *
  * Same parameters, defaults, cost and exceptions as `smooth_with_creases()`,
  * but `edge_is_constrained_map` and `vertex_is_constrained_map` are ignored.
+ *
+ * \param mesh the surface; its vertex points are replaced
+ * \param lambda, mu the factors, as for `smooth_with_creases()`
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{lambda|mu iterations (2 steps each), an integer >= 0}
+ *     \cgalParamType{an integer} \cgalParamDefault{`taubin_default_number_of_iterations` (10)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the positions of the vertices, replaced by the smoothed ones}
+ *     \cgalParamType{a model of `ReadWritePropertyMap` from `vertex_descriptor` to the point type} \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{indices in [0, n) for the vertices}
+ *     \cgalParamType{a model of `ReadablePropertyMap` from `vertex_descriptor` to `std::size_t`} \cgalParamDefault{the mesh's own, or a dynamic map}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a CGAL kernel} \cgalParamDefault{the kernel of the point type}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  */
 template <typename TriangleOrPolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 void plain_lambda_mu_smoothing(TriangleOrPolygonMesh& mesh, double lambda, double mu,
@@ -454,6 +519,28 @@ void plain_lambda_mu_smoothing(TriangleOrPolygonMesh& mesh, double lambda, doubl
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// `plain_lambda_mu_smoothing()` with Taubin's default factors.
+///
+/// \param mesh the surface; its vertex points are replaced
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{lambda|mu iterations (2 steps each), an integer >= 0}
+///     \cgalParamType{an integer} \cgalParamDefault{`taubin_default_number_of_iterations` (10)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of the vertices, replaced by the smoothed ones}
+///     \cgalParamType{a model of `ReadWritePropertyMap` from `vertex_descriptor` to the point type} \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{indices in [0, n) for the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` from `vertex_descriptor` to `std::size_t`} \cgalParamDefault{the mesh's own, or a dynamic map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a CGAL kernel} \cgalParamDefault{the kernel of the point type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleOrPolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 void plain_lambda_mu_smoothing(TriangleOrPolygonMesh& mesh, const CGAL_NP_CLASS& np = parameters::default_values())
 {

@@ -76,11 +76,16 @@ struct Marching_cubes_csg_statistics
   /// in the cube, or the fan would fold); face segments flipped to join
   /// neighbouring feature vertices; crease edges output.
   std::size_t feature_vertices = 0;
+  /// Feature vertices of rank 3 (corners).
   std::size_t corner_vertices = 0;
+  /// Polygons whose normals disagree by more than the feature angle but that
+  /// keep the plain triangulation.
   std::size_t plain_feature_polygons = 0;
   /// Of `plain_feature_polygons`, those whose fan would have folded.
   std::size_t folded_feature_polygons = 0;
+  /// Face segments flipped to join the feature vertices of neighbouring cubes.
   std::size_t flipped_edges = 0;
+  /// Flipped edges whose dihedral angle is above the feature angle: the output creases.
   std::size_t crease_edges = 0;
   /// Edges between two edge points shorter than `sliver_edge_length` cells
   /// that were collapsed (see the named parameter).
@@ -92,6 +97,7 @@ struct Marching_cubes_csg_statistics
   /// volume by more than a factor 2.  Such a component may be missing from
   /// the output, or be much too thick there.
   std::size_t checked_components = 0;
+  /// The components the lattice does not resolve (see `checked_components`).
   std::vector<Marching_cubes_csg_component_report> under_resolved_components;
 };
 
@@ -102,7 +108,9 @@ struct Marching_cubes_csg_statistics
 /// triangles'.
 struct Marching_cubes_csg_features
 {
+  /// Crease edges, as pairs of output vertex indices (smaller first).
   std::vector<std::array<std::size_t, 2>> crease_edges;
+  /// Corner vertices (rank-3 feature vertices).
   std::vector<std::size_t> corner_vertices;
 };
 
@@ -647,17 +655,42 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
  * \param lattice the sampling lattice (see `Regular_lattice_3::enclosing()`)
  * \param points, triangles the soup is appended to them (indices are offset
  *        by the initial size of `points`)
- * \param np `Boolean_isosurfacing::parameters::progress(f)` (`f(double)`
- *        called from the calling thread), `max_memory_bytes(n)` (default
- *        8 GiB; refuse to start beyond it), `sharp_features(b)` (default
- *        true: Extended Marching Cubes feature vertices, creases and corners
- *        from the exact Hermite data, doc/Boolean_isosurfacing_3/features.md;
- *        false: plain Marching Cubes), `feature_angle(degrees)` (default 30),
- *        `sliver_edge_length(cells)` (default 0.1 with features, 0 without),
- *        `sharp_feature_output(&features)` (a `Marching_cubes_csg_features`
- *        that receives the crease edges and corners), `resolution_check(b)`
- *        (default true: judge every input component, see
- *        `Marching_cubes_csg_statistics::under_resolved_components`).
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{progress}
+ *     \cgalParamDescription{called with the fraction done, from the calling thread}
+ *     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_memory_bytes}
+ *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sharp_features}
+ *     \cgalParamDescription{Extended Marching Cubes feature vertices, creases and corners from the
+ *       exact crossing normals (doc/Boolean_isosurfacing_3/features.md); `false`: plain Marching Cubes}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{feature_angle}
+ *     \cgalParamDescription{a polygon whose crossing normals differ by more than this many degrees
+ *       gets a feature vertex; in (0, 180)}
+ *     \cgalParamType{`double`} \cgalParamDefault{30}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sliver_edge_length}
+ *     \cgalParamDescription{edges between two edge points shorter than this many cells are
+ *       collapsed (link condition, no triangle turned over); in [0, 0.5)}
+ *     \cgalParamType{`double`} \cgalParamDefault{0.1 with sharp features, 0 without}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sharp_feature_output}
+ *     \cgalParamDescription{receives the crease edges and corner vertices}
+ *     \cgalParamType{`Marching_cubes_csg_features*`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{resolution_check}
+ *     \cgalParamDescription{judge every input component against the lattice
+ *       (`Marching_cubes_csg_statistics::under_resolved_components`)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * With sharp features the vertex numbering above holds for the edge
  * vertices; the feature vertices follow them, and short-edge collapses
@@ -710,6 +743,17 @@ Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes
  *
  * As the polygon soup overload, and adds the result to `output` with
  * `PMP::polygon_soup_to_polygon_mesh()`.
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{progress}
+ *     \cgalParamDescription{called with the fraction done, from the calling thread}
+ *     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_memory_bytes}
+ *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * \tparam MutableFaceGraph a model of `MutableFaceGraph` whose vertex points
  *         are constructible from three doubles

@@ -105,9 +105,26 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  * `[first_layer, last_layer)` of `lattice`: classifies only the lattice
  * lines of planes `first_layer .. last_layer` with the triangles that can
  * meet them, and returns that part of the sequential output in `range`:
- * the output of `marching_cubes_csg()` with `sharp_features(false)`.
- * Named parameters as `marching_cubes_csg()`, except that `sharp_features`
- * defaults to false and must not be true.
+ * the output of `marching_cubes_csg()` with `sharp_features(false)`
+ * (sharp features are not available on slab ranges).
+ *
+ * \param meshes the closed triangle meshes (the same for every range)
+ * \param expression a Boolean expression with `meshes.size()` variables
+ * \param lattice the whole lattice
+ * \param first_layer, last_layer the cube layers of the range
+ * \param range the output (overwritten)
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{max_memory_bytes}
+ *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sharp_features}
+ *     \cgalParamDescription{must be `false`: `true` throws `Invalid_input_error`}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * \pre `first_layer <= last_layer <= lattice.number_of_points(2) - 1`
  * \throws the exceptions of `marching_cubes_csg()`, and Invalid_input_error

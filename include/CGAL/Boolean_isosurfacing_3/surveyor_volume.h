@@ -211,22 +211,26 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
  * \tparam NamedParameters a sequence of named parameters
  *
  * \param tmesh the closed triangle mesh
- * \param np an optional sequence of named parameters among:
- *   - `vertex_point_map` (CGAL): the vertex positions; default
- *     `get(CGAL::vertex_point, tmesh)`.
- *   - `geom_traits` (CGAL): a model of `SurveyorVolumeTraits_3`; default the
- *     kernel of the point type.
- *   - `Boolean_isosurfacing::parameters::signed_volume(bool)`: default `false`:
- *     a negative result (an inward-oriented surface) throws
- *     `Inward_oriented_mesh_error`.  With `true` the signed,
- *     winding-number-weighted volume is returned for any closed triangle
- *     mesh, inward-oriented or self-intersecting.
- *   - `Boolean_isosurfacing::parameters::check_self_intersections(bool)`:
- *     default `false` (the check costs O(n log n), the volume O(n)): when
- *     `true` and `signed_volume` is `false`, a self-intersecting surface
- *     throws `Self_intersecting_mesh_error`.  When this parameter is passed,
- *     `geom_traits` must also meet the requirements of
- *     `PMP::does_self_intersect()` (any CGAL kernel does).
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the positions of the vertices of `tmesh`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::vertex_descriptor` as key type} \cgalParamDefault{`boost::get(CGAL::vertex_point, tmesh)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a model of `SurveyorVolumeTraits_3`} \cgalParamDefault{a \cgal kernel deduced from the point type}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{signed_volume}
+ *     \cgalParamDescription{with `false` a negative result (an inward-oriented surface) throws `Inward_oriented_mesh_error`; with `true` the signed, winding-number-weighted volume is returned for any closed triangle mesh, inward-oriented or self-intersecting}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{check_self_intersections}
+ *     \cgalParamDescription{when `true` and `signed_volume` is `false`, a self-intersecting surface throws `Self_intersecting_mesh_error`; the check costs O(n log n) and needs `geom_traits` to meet the requirements of `PMP::does_self_intersect()` (any CGAL kernel does)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  *   Our own parameters start a chain, and CGAL's can follow them
  *   (`signed_volume(true).geom_traits(k)`); to combine two of ours, use the
@@ -313,8 +317,25 @@ surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters:
  * \tparam TriangleRange a range of random-access ranges of indices into
  *         `points`, each of size 3
  *
- * Named parameters: `point_map` (CGAL), `geom_traits` (CGAL) and
- * `Boolean_isosurfacing::parameters::signed_volume` as for the mesh overload.
+ * \param points the points
+ * \param triangles the triangles, indices into `points`
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{point_map}
+ *     \cgalParamDescription{the point of each element of `points`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` whose value type is a CGAL point} \cgalParamDefault{`CGAL::Identity_property_map`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a model of `SurveyorVolumeTraits_3`} \cgalParamDefault{the kernel of the point type}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{signed_volume}
+ *     \cgalParamDescription{with `false` a negative result (an inward-oriented surface) throws `Inward_oriented_mesh_error`; with `true` the signed, winding-number-weighted volume is returned for any closed triangle mesh, inward-oriented or self-intersecting}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
  * `check_self_intersections` is not available for soups (convert the soup to
  * a mesh with `PMP::polygon_soup_to_polygon_mesh` first): passing it does not
  * compile.
@@ -484,7 +505,15 @@ std::array<double, 3> finite_centroid(const PointArray& points)
  * checks as the soup overload, without any kernel: the fastest path, a
  * structure-of-arrays loop over the index array.
  *
- * Named parameters: `Boolean_isosurfacing::parameters::signed_volume`.
+ * \param soup the soup
+ * \param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{signed_volume}
+ *     \cgalParamDescription{with `false` a negative result (an inward-oriented surface) throws `Inward_oriented_mesh_error`; with `true` the signed, winding-number-weighted volume is returned for any closed triangle mesh, inward-oriented or self-intersecting}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * \throws Empty_input_error, Invalid_input_error (an index out of range or
  * repeated in a triangle), Open_mesh_error, Non_finite_value_error,

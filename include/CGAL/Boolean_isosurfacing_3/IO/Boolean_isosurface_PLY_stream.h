@@ -26,6 +26,8 @@ namespace IO {
 /// faces go to a temporary file `filename + ".faces"` (PLY stores all
 /// vertices first), appended by `close()`, which also writes the final
 /// counts into the fixed-width header.  Memory: O(1).
+///
+/// \cgalModels{BooleanIsosurfaceSink}
 class Boolean_isosurface_PLY_stream
 {
 public:

@@ -4,7 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_IO_PTS_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_IO_PTS_H
 
-// Reader of the `.pts` point files of seeds/contour_tracing_signed_distance.txt
+// Reader of the `.pts` point files of the contour-tracing assignment ([ContourTracing])
 // ("one point per line, x y z, optionally followed by nx ny nz") and of Hoppe's
 // own 1992 files (points/cactus.pts, points/distcap.pts), which are A3dStream
 // text: `p x y z` lines, colour lines `d`/`s`/`g`/`c r g b`, and `n nx ny nz`

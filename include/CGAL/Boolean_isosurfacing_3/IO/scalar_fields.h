@@ -155,6 +155,8 @@ inline bool ends_with(const std::string& s, const char* suffix) { return CGAL::B
  * vertices on demand with `seekg()` / `read()`.
  *
  * \warning Not thread-safe: one reader holds one stream; give each thread its own reader.
+ *
+ * \cgalModels{ScalarFieldSource}
  */
 class Raw_scalar_field_reader
 {

@@ -4,7 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_IO_TRIS_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_IO_TRIS_H
 
-// The `.tris` triangle file of seeds/contour_tracing_signed_distance.txt:
+// The `.tris` triangle file of the contour-tracing assignment ([ContourTracing]):
 //
 //   tri[0].n
 //   tri[0].p0

@@ -39,6 +39,8 @@ namespace Boolean_isosurfacing {
 /// `IO::Raw_scalar_field_reader`: vertex-major, little-endian float64 or
 /// float32, no header) with `MPI_File_read_at`: each rank reads only the
 /// vertices it asks for.  Opening is collective over `comm`.
+///
+/// \cgalModels{ScalarFieldSource}
 class Mpi_raw_scalar_field_reader
 {
 public:
@@ -140,8 +142,25 @@ struct Boolean_isosurface_distributed_statistics
 /// `Mpi_raw_scalar_field_reader`, or the caller's own), written to the binary
 /// PLY file `filename` in the layout of `IO::Boolean_isosurface_PLY_stream`.
 /// The file is the one a single process writes, byte for byte: same vertex
-/// numbering, same polygon order.  Collective; named parameters as
-/// `extract_boolean_isosurface_slab_range()`.
+/// numbering, same polygon order.  Collective.
+///
+/// \param comm the communicator
+/// \param grid the whole regular grid (the same on every rank)
+/// \param source the fields, a model of `ScalarFieldSource`
+/// \param expression the Boolean expression of the fields
+/// \param filename the output PLY file
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{close_at_domain_boundary}
+///     \cgalParamDescription{close the set on the boundary of the grid}
+///     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{slab_layers}
+///     \cgalParamDescription{cube layers per slab (the unit of reading and of parallel work); 0 means the default}
+///     \cgalParamType{`std::size_t`} \cgalParamDefault{8}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \throws Distributed_error on every rank if any rank failed (the message
 /// names the lowest failing rank and its error).
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename FieldSource,

@@ -65,7 +65,21 @@ inline std::ostringstream off_stream()
 /// meshes, expression and lattice), written to the OFF file `filename` as
 /// `CGAL::IO::write_polygon_mesh(filename, mesh, stream_precision(17))`
 /// writes the `Surface_mesh` that `marching_cubes_csg()` returns.
-/// Collective; named parameters as `marching_cubes_csg()`.
+/// Collective.
+///
+/// \param comm the communicator
+/// \param meshes the closed triangle meshes (the same on every rank)
+/// \param expression a Boolean expression with `meshes.size()` variables
+/// \param lattice the whole lattice
+/// \param filename the output OFF file
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{max_memory_bytes}
+///     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
+///     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \throws Distributed_error on every rank if any rank failed.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
