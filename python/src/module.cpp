@@ -256,6 +256,22 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
   info["feature_vertices"] = statistics.feature_vertices;
   info["corner_vertices"] = statistics.corner_vertices;
   info["crease_edges"] = statistics.crease_edges;
+  // Input components the lattice does not resolve (may be missing from V, F).
+  py::list unresolved;
+  for(const BI::Marching_cubes_csg_component_report& c : statistics.under_resolved_components)
+  {
+    py::dict d;
+    d["mesh"] = c.mesh;
+    d["component"] = c.component;
+    d["triangles"] = c.triangles;
+    d["crossings"] = c.crossings;
+    d["volume"] = c.volume;
+    d["lattice_volume"] = c.lattice_volume;
+    d["suggested_spacing"] = c.suggested_spacing;
+    unresolved.append(d);
+  }
+  info["checked_components"] = statistics.checked_components;
+  info["under_resolved_components"] = unresolved;
   info["seconds_classification"] = statistics.seconds_classification;
   info["seconds_edges"] = statistics.seconds_edges;
   info["seconds_triangulation"] = statistics.seconds_triangulation;
@@ -712,7 +728,10 @@ threads (0: all cores); the output does not depend on it.  Ctrl-C
 
 Returns (V, F, info): V (k, 3) float64, F (t, 3) int64 outward triangles,
 closed and 2-manifold when info["closed"]; info holds the lattice, the
-crossings and the time of each stage.  The GIL is released while it runs.)doc");
+crossings, the sharp-feature counts, info["under_resolved_components"] (input
+components with no lattice point inside or a lattice volume off by more
+than a factor 2: they may be missing from the output) and the time of each
+stage.  The GIL is released while it runs.)doc");
 
   m.def("contour", &contour_py, "points"_a, "normals"_a = py::none(), "cell_size"_a = py::none(),
         "cells"_a = py::none(), "k"_a = 15, "rho"_a = py::none(), "delta"_a = py::none(), "max_jump"_a = py::none(),

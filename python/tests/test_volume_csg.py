@@ -119,6 +119,20 @@ def test_csg_feature_angle_is_checked():
         bi.csg([A], "A", cells=8, feature_angle=180.0)
 
 
+def test_csg_reports_a_slab_thinner_than_the_spacing():
+    # [1.5, 2] x [0, 1] x [0.1, 0.14] next to the unit box, at 16 cells
+    # (r = 0.125): no lattice point inside the slab, so it is missing.
+    A, B = cube_mesh(), cube_mesh((1.5, 0.0, 0.1), (2.0, 1.0, 0.14))
+    V, F, info = bi.csg([A, B], "union", cells=16)
+    assert [(c["mesh"], c["component"]) for c in info["under_resolved_components"]] == [(1, 0)]
+    c = info["under_resolved_components"][0]
+    assert c["volume"] == pytest.approx(0.02) and c["lattice_volume"] == 0
+    assert 0 < c["suggested_spacing"] < info["spacing"]
+    V2, F2, info2 = bi.csg([A, B], "union", spacing=c["suggested_spacing"])
+    assert info2["under_resolved_components"] == []
+    assert bi.surveyor_volume(V2, F2) == pytest.approx(1.02, rel=1e-3)
+
+
 def test_csg_sphere_volume_converges():
     S = sphere_mesh(rings=64, segments=128)
     mesh_volume = bi.surveyor_volume(*S)
