@@ -3,16 +3,23 @@
 //   csg A B --op union|intersection|difference (--cells N | --spacing r) [-o out.off]
 //   csg A B C ... --expr "A & !B | C" (--cells N | --spacing r) [-o out.off]
 //   csg --demo DIR
+//   [--no-features] [--feature-angle DEG] [--creases F] [--corners F] [--strict]
 //
 // Reads OFF/OBJ/PLY/STL; the i-th input is the variable A, B, C, ... of the
 // expression (also f0, f1, ...).  Prints the lattice size, the time of each
 // stage, the output size and the output's Surveyor volume.  `csg --help`
-// lists the options.  Exit status: 0, 1 for a bad file or a failed
-// computation, 2 for a bad command line; every error is one line on stderr.
+// lists the options.  Sharp creases and corners are on by default
+// (doc/Boolean_isosurfacing_3/features.md).  Input components the lattice
+// does not resolve (and empty results) get a warning naming them and the
+// --cells that would resolve them; --strict makes that an error.  Exit
+// status: 0, 1 for a bad file, a failed computation or (--strict) an
+// unresolved input, 2 for a bad command line; every error is one line on
+// stderr.
 
 #include "tool_support.h"
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/boolean_isosurface_files.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
@@ -35,6 +42,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -70,6 +78,10 @@ struct Options
   double max_memory_gib = 0; // 0: the default
   Unbounded_mode unbounded = Unbounded_mode::BOX;
   bool parallel = true;
+  bool features = true;
+  double feature_angle = 30;
+  std::string creases_file, corners_file;
+  bool strict = false;
 };
 
 const char* help_text =
@@ -94,8 +106,19 @@ const char* help_text =
     "                     outward solid, whose volume is printed; \"A | !A\" gives the box itself);\n"
     "                   surface: keep only the inputs' surfaces (closed and inward-oriented, bounding\n"
     "                     the complement, whose volume is printed)\n"
+    "  --no-features    plain Marching Cubes (default: sharp creases and corners, Extended Marching Cubes\n"
+    "                   on the exact crossing normals)\n"
+    "  --feature-angle DEG\n"
+    "                   a cube whose crossing normals differ by more than DEG degrees gets a feature\n"
+    "                   vertex (default 30, in (0, 180))\n"
+    "  --creases F      write the crease edges as polylines (CGAL polylines text format)\n"
+    "  --corners F      write the corners, one 'x y z' line each\n"
+    "  --strict         an input component the lattice does not resolve (no lattice point inside, or\n"
+    "                   a lattice volume off by more than a factor 2), or an empty result from\n"
+    "                   non-empty inputs, is an error (exit 1, nothing written) instead of a warning\n"
     "  --max-memory G   refuse a lattice estimated to need more than G GiB (default 8, at most 3/4 of the RAM)\n"
     "  --sequential     one thread (default: parallel when built with TBB; the same mesh)\n"
+    "  --distributed    under mpirun, split the lattice over the ranks (needs --no-features)\n"
     "  -h, --help       this help\n"
     "exit status: 0 success, 1 bad input file or failed computation, 2 bad command line\n";
 
@@ -180,6 +203,7 @@ struct Result
   Mesh mesh;
   BI::Marching_cubes_csg_statistics statistics;
   BI::Regular_lattice_3 lattice;
+  BI::Crease_network creases; // vertex indices of `mesh`
 };
 
 std::size_t max_memory_bytes(const Options& options)
@@ -214,40 +238,87 @@ CGAL::Bbox_3 bounding_box(const std::vector<Mesh>& meshes)
   return box;
 }
 
-// The lattice encloses `box` (the inputs' bounding box) with `margin_cells`.
+// The crease edges (vertex pairs) chained into polylines between corners,
+// branch points and ends; a closed crease repeats its first vertex.
+BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::vector<std::array<std::size_t, 2>>& edges,
+                                    const std::vector<std::size_t>& corners)
+{
+  BI::Crease_network network;
+  network.corners = corners;
+  network.number_of_crease_edges = edges.size();
+  std::vector<std::vector<std::size_t>> incident(number_of_vertices);
+  for(std::size_t e = 0; e < edges.size(); ++e)
+    for(std::size_t v : edges[e])
+      incident[v].push_back(e);
+  std::vector<bool> is_corner(number_of_vertices, false), used(edges.size(), false);
+  for(std::size_t v : corners)
+    is_corner[v] = true;
+  auto is_end = [&](std::size_t v) { return is_corner[v] || incident[v].size() != 2; };
+  auto walk = [&](std::size_t v, std::size_t e) {
+    std::vector<std::size_t> line{v};
+    while(!used[e])
+    {
+      used[e] = true;
+      v = edges[e][0] == v ? edges[e][1] : edges[e][0];
+      line.push_back(v);
+      if(is_end(v))
+        break;
+      e = incident[v][0] == e ? incident[v][1] : incident[v][0];
+    }
+    network.polylines.push_back(std::move(line));
+  };
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
+    if(is_end(v))
+      for(std::size_t e : incident[v])
+        if(!used[e])
+          walk(v, e);
+  for(std::size_t e = 0; e < edges.size(); ++e)
+    if(!used[e])
+      walk(edges[e][0], e); // a closed loop without corner
+  return network;
+}
+
+// The lattice encloses `box` (the inputs' bounding box) with `margin_cells`;
+// the library's default lattice keeps the box's faces off the lattice planes.
 Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& expression, const Options& options,
                const CGAL::Bbox_3& box, std::size_t margin_cells = 1)
 {
-  const BI::Regular_lattice_3 enclosing =
+  const BI::Regular_lattice_3 lattice =
       options.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells, margin_cells)
                         : BI::Regular_lattice_3::enclosing(box, options.spacing, margin_cells);
-  // `enclosing` puts a lattice plane on each side of the bounding box, so
-  // inputs with axis-aligned faces there (CAD parts) would have whole faces
-  // on lattice planes: still a correct, closed, 2-manifold result (one
-  // symbolic convention decides), but several lattice edges then put their
-  // vertex on the same lattice point, giving zero-area triangles.  Shifting
-  // the lattice by an irrational-looking fraction of a cell, with one more
-  // point per axis, moves those planes off the box.
-  const double shift = 0.381966011250105 * enclosing.spacing(); // (3 - sqrt 5) / 2
-  std::array<double, 3> origin = enclosing.origin();
-  std::array<std::size_t, 3> counts = enclosing.number_of_points();
-  for(int a = 0; a < 3; ++a)
-  {
-    origin[a] -= shift;
-    ++counts[a];
-  }
-  const BI::Regular_lattice_3 lattice(origin, enclosing.spacing(), counts);
   Mesh output;
+  auto crease = output.add_property_map<Mesh::Edge_index, bool>("e:csg_crease", false).first;
+  auto corner = output.add_property_map<Mesh::Vertex_index, bool>("v:csg_corner", false).first;
   const Progress_bar progress;
   BI::Marching_cubes_csg_statistics statistics;
-  const auto np = BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::progress(progress));
+  const auto np =
+      BI::parameters::sharp_features(
+          options.features,
+          BI::parameters::feature_angle(
+              options.feature_angle,
+              BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::progress(progress))))
+          .edge_is_constrained_map(crease)
+          .vertex_is_constrained_map(corner);
 #ifdef CGAL_LINKED_WITH_TBB
   if(options.parallel)
     statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(meshes, expression, lattice, output, np);
   else
 #endif
     statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(meshes, expression, lattice, output, np);
-  return {std::move(output), statistics, lattice};
+  // A fresh Surface_mesh: vertex i is soup point i.
+  std::vector<std::array<std::size_t, 2>> edges;
+  std::vector<std::size_t> corners;
+  for(const Mesh::Edge_index e : output.edges())
+    if(crease[e])
+      edges.push_back({{std::size_t(output.vertex(e, 0)), std::size_t(output.vertex(e, 1))}});
+  for(const Mesh::Vertex_index v : output.vertices())
+    if(corner[v])
+      corners.push_back(std::size_t(v));
+  BI::Crease_network creases = crease_polylines(output.number_of_vertices(), edges, corners);
+  // Not part of the written mesh.
+  output.remove_property_map(crease);
+  output.remove_property_map(corner);
+  return {std::move(output), std::move(statistics), lattice, std::move(creases)};
 }
 
 void print_result(const Result& r)
@@ -260,6 +331,69 @@ void print_result(const Result& r)
               s.seconds_classification, s.seconds_edges, s.seconds_triangulation, s.crossings);
   std::printf("  output %zu vertices, %zu triangles\n", std::size_t(r.mesh.number_of_vertices()),
               std::size_t(r.mesh.number_of_faces()));
+  if(s.feature_vertices > 0 || s.plain_feature_polygons > 0)
+    std::printf("  sharp features: %zu feature vertices (%zu corners), %zu crease edges in %zu polylines, "
+                "%zu feature polygons kept plain, %zu short edges collapsed\n",
+                s.feature_vertices, s.corner_vertices, s.crease_edges, r.creases.polylines.size(),
+                s.plain_feature_polygons, s.collapsed_edges);
+  std::printf("  resolution check: %zu input components, %zu not resolved by the lattice\n", s.checked_components,
+              s.under_resolved_components.size());
+}
+
+// The warnings about what the lattice missed: one line each, at most
+// `limit` lines.  Returns their number (all of them, not only printed).
+std::size_t resolution_warnings(const Result& r, const Options& options, const std::vector<Mesh>& meshes,
+                                const CGAL::Bbox_3& box, const BI::Boolean_expression& requested)
+{
+  const char* level = options.strict ? "error: " : "warning: ";
+  const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  std::size_t count = 0, printed = 0;
+  const std::size_t limit = 10;
+  for(const BI::Marching_cubes_csg_component_report& c : r.statistics.under_resolved_components)
+  {
+    if(c.mesh >= options.files.size())
+      continue; // the clipping box
+    ++count;
+    if(printed == limit)
+      continue;
+    ++printed;
+    const double cells = std::ceil(longest / c.suggested_spacing);
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "%s%s (%s) component %zu (%zu triangles, volume %.6g) is not resolved by the lattice: %s, "
+                  "lattice volume %.6g; --cells %.0f (spacing %.6g) would resolve it",
+                  level, options.files[c.mesh].c_str(), c.mesh < 26 ? std::string(1, char('A' + c.mesh)).c_str() : "",
+                  c.component, c.triangles, c.volume,
+                  c.crossings == 0 ? "it crosses no lattice edge"
+                                   : (std::to_string(c.inside_points) + " lattice points inside").c_str(),
+                  c.lattice_volume, cells, c.suggested_spacing);
+    biso_tools::print_error("csg", text);
+  }
+  if(count > printed)
+    biso_tools::print_error("csg", std::string(level) + std::to_string(count - printed) +
+                                       " more input components are not resolved by the lattice");
+  // An empty result from non-empty inputs is the answer only if the
+  // expression is false wherever some inputs overlap; we cannot tell
+  // cheaply, so it is never a plain success unless the expression is
+  // false everywhere (A & !A).
+  bool inputs_empty = true;
+  for(std::size_t i = 0; i < options.files.size(); ++i)
+    inputs_empty = inputs_empty && meshes[i].number_of_faces() == 0;
+  if(r.mesh.number_of_faces() == 0 && !requested.evaluate(0) && !inputs_empty)
+  {
+    const std::size_t n = requested.number_of_variables();
+    bool satisfiable = n > 20; // too many to enumerate: assume it can be true
+    for(std::uint64_t m = 1; !satisfiable && m < (std::uint64_t(1) << n); ++m)
+      satisfiable = requested.evaluate(m);
+    if(satisfiable)
+    {
+      ++count;
+      biso_tools::print_error("csg", std::string(level) +
+                                         "the result is empty although the inputs are not: either the exact result "
+                                         "is empty or the lattice is too coarse to see it");
+    }
+  }
+  return count;
 }
 
 double exact_volume(const CGAL::Surface_mesh<Epeck::Point_3>& m)
@@ -350,6 +484,9 @@ int run(const Options& options)
   const BI::Boolean_expression requested = expression_from(options, options.files.size());
   BI::Boolean_expression expression = requested;
   if(!options.output.empty()) biso_tools::check_output_file(options.output);
+  for(const std::string* f : {&options.creases_file, &options.corners_file})
+    if(!f->empty()) biso_tools::check_output_file(*f);
+
   std::vector<Mesh> meshes = read_inputs(options.files);
 
   // Outside every input all masks are 0, so the result is unbounded iff
@@ -364,7 +501,7 @@ int run(const Options& options)
     const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
     const double spacing = options.cells > 0 ? longest / double(options.cells) : options.spacing;
     // The box one cell beyond the inputs, inside a lattice of two cells'
-    // margin: its faces lie between lattice planes (the lattice is shifted
+    // margin: its faces lie between lattice planes (the library's lattice is offset
     // by a fraction of a cell), so they come out flat.
     for(int a = 0; a < 3; ++a)
     {
@@ -388,6 +525,7 @@ int run(const Options& options)
   }
   const Result& r = *result;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::size_t unresolved = resolution_warnings(r, options, meshes, box, requested);
   const std::size_t inputs = options.files.size();
   std::printf("csg %s over %zu meshes\n", requested.to_string().c_str(), options.files.size());
   if(clip)
@@ -402,9 +540,26 @@ int run(const Options& options)
                 -BI::surveyor_volume(r.mesh, BI::parameters::signed_volume(true)));
   else
     std::printf("  volume %.9g\n", BI::surveyor_volume(r.mesh));
+  if(unresolved > 0 && options.strict)
+    return 1; // nothing written: the result is not trusted
   if(!options.output.empty() &&
      !CGAL::IO::write_polygon_mesh(options.output, r.mesh, CGAL::parameters::stream_precision(17)))
     throw biso_tools::File_error(options.output + ": cannot write");
+  if(!options.creases_file.empty() || !options.corners_file.empty())
+  {
+    std::vector<Point> points(r.mesh.points().begin(), r.mesh.points().end());
+    try
+    {
+      if(!options.creases_file.empty())
+        BI::IO::write_polylines(options.creases_file, points, r.creases);
+      if(!options.corners_file.empty())
+        BI::IO::write_corners(options.corners_file, points, r.creases);
+    }
+    catch(const std::runtime_error& e)
+    {
+      throw biso_tools::File_error(e.what());
+    }
+  }
   return 0;
 }
 
@@ -436,6 +591,15 @@ void parse(int argc, char** argv, Options& options, bool& help)
     }
     else if(arg == "--demo") options.demo_dir = value("a directory");
     else if(arg == "--sequential") options.parallel = false;
+    else if(arg == "--no-features") options.features = false;
+    else if(arg == "--strict") options.strict = true;
+    else if(arg == "--feature-angle")
+    {
+      options.feature_angle = biso_tools::parse_real(arg, value("an angle in degrees"), biso_tools::Sign_rule::POSITIVE);
+      if(!(options.feature_angle < 180)) throw Usage_error("--feature-angle: the angle must be in (0, 180) degrees");
+    }
+    else if(arg == "--creases") options.creases_file = value("a file name");
+    else if(arg == "--corners") options.corners_file = value("a file name");
     else if(arg == "--cells")
     {
       const std::string text = value("a number of cells");
@@ -465,9 +629,12 @@ void parse(int argc, char** argv, Options& options, bool& help)
     else options.files.push_back(arg);
   }
   if(!options.demo_dir.empty() && (!options.files.empty() || options.have_op || options.have_expression ||
-                                   !options.output.empty()))
+                                   !options.output.empty() || !options.creases_file.empty() ||
+                                   !options.corners_file.empty()))
     throw Usage_error("--demo takes a directory and at most --cells or --spacing, no input file, --op, --expr or -o");
   if(options.cells > 0 && options.spacing > 0) throw Usage_error("give only one of --cells N and --spacing r");
+  if(!options.features && (!options.creases_file.empty() || !options.corners_file.empty()))
+    throw Usage_error("--creases and --corners need sharp features: drop --no-features");
 }
 
 } // namespace

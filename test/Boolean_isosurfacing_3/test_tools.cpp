@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <csignal>
 #include <cstdlib>
@@ -12,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -459,6 +462,8 @@ TEST_F(CsgTool, HelpGoesToStdoutWithExitZero)
     EXPECT_TRUE(r.err.empty()) << r.err;
     EXPECT_NE(r.out.find("usage: csg"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("--unbounded"), std::string::npos) << r.out;
+    for(const char* option : {"--no-features", "--feature-angle", "--creases", "--corners", "--strict"})
+      EXPECT_NE(r.out.find(option), std::string::npos) << option;
   }
 }
 
@@ -541,6 +546,11 @@ TEST_F(CsgTool, BadCommandLinesGetOneLineAndExitTwo)
       {two + "--cells 10 -o out.xyz", 2, "extension"},
       {two + "--cells 10 --max-memory -2", 2, "positive"},
       {two + "--cells 10 --expr A", 2, "exactly one of --op and --expr"},
+      {two + "--cells 10 --feature-angle 0", 2, "positive"},
+      {two + "--cells 10 --feature-angle 180", 2, "(0, 180)"},
+      {two + "--cells 10 --feature-angle", 2, "needs"},
+      {two + "--cells 10 --no-features --creases c.txt", 2, "need sharp features"},
+      {two + "--cells 10 --no-features --no-features", 2, "more than once"},
       {a + " " + a + " --expr \"A & (B\" --cells 10", 2, "column"},
       {a + " " + a + " --expr \"A | C\" --cells 10", 2, "2 files"},
       {a + " " + a + " --op xor --cells 10", 2, "unknown operation"},
@@ -672,6 +682,180 @@ TEST_F(ContourTool, BadCommandLinesGetOneLineAndTheRightExit)
   const Result g = run(garbage);
   EXPECT_EQ(g.status, 1);
   EXPECT_TRUE(is_one_clean_line(g.err));
+}
+
+// --- Sharp features and the resolution check (issue 17) --------------------
+
+std::vector<std::array<double, 3>> read_points(const std::string& text, bool polylines)
+{
+  std::vector<std::array<double, 3>> points;
+  std::istringstream in(text);
+  std::string line;
+  while(std::getline(in, line))
+  {
+    std::istringstream l(line);
+    std::size_t n = 1;
+    if(polylines && !(l >> n))
+      continue;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      std::array<double, 3> p;
+      if(l >> p[0] >> p[1] >> p[2])
+        points.push_back(p);
+    }
+  }
+  return points;
+}
+
+// A = [0,2]^3 minus B = A moved by a non-lattice offset: the exact result has
+// 14 vertices (7 of A, B's lowest corner, 3 + 3 edge-face intersections), and
+// its edges are on the planes x in {0, 2, bx}, y in {0, 2, by}, z in {0, 2, bz}.
+TEST_F(CsgTool, SharpFeaturesPutCornersAndCreasesOnTheExactResult)
+{
+  const double b[3] = {0.5137, 0.4419, 0.6271};
+  const std::string a = write("a.off", box_off(0, 0, 0, 2));
+  // box_off() with a different offset per axis: its corner lines rewritten.
+  std::ostringstream moved;
+  moved.precision(17);
+  moved << "OFF\n8 12 0\n";
+  for(int k = 0; k < 8; ++k)
+    moved << b[0] + 2 * (k & 1) << ' ' << b[1] + 2 * ((k >> 1) & 1) << ' ' << b[2] + 2 * ((k >> 2) & 1) << "\n";
+  const std::string faces = box_off(0, 0, 0, 2);
+  moved << faces.substr(faces.find("3 0 2 3"));
+  const std::string bb = write("b.off", moved.str());
+  const double exact = 8 - (2 - b[0]) * (2 - b[1]) * (2 - b[2]);
+  const std::string creases = m_dir + "/creases.polylines.txt", corners = m_dir + "/corners.xyz";
+  const Result r = run(a + " " + bb + " --op difference --cells 32 --creases " + creases + " --corners " + corners +
+                       " -o " + m_dir + "/d.off");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("sharp features:"), std::string::npos) << r.out;
+  // Exact up to rounding: the faces are flat and every edge and corner is a feature.
+  EXPECT_NEAR(number_after(r.out, "volume "), exact, 1e-9 * exact) << r.out;
+  const double spacing = number_after(r.out, "spacing ");
+  ASSERT_GT(spacing, 0) << r.out;
+  std::vector<std::array<double, 3>> vertices;
+  for(int k = 0; k < 7; ++k)
+    vertices.push_back({{2.0 * (k & 1), 2.0 * ((k >> 1) & 1), 2.0 * ((k >> 2) & 1)}});
+  vertices.push_back({{b[0], b[1], b[2]}});
+  for(int axis = 0; axis < 3; ++axis)
+  {
+    std::array<double, 3> p{{b[0], b[1], b[2]}}, q{{2, 2, 2}};
+    p[axis] = 2; // B's edge from its lowest corner along `axis` leaves A at 2
+    q[axis] = b[axis]; // A's edge into (2, 2, 2) enters B at b
+    vertices.push_back(p);
+    vertices.push_back(q);
+  }
+  const std::vector<std::array<double, 3>> found = read_points(slurp(corners), false);
+  std::vector<bool> hit(vertices.size(), false);
+  for(const auto& c : found)
+  {
+    double best = 1e300;
+    std::size_t nearest = 0;
+    for(std::size_t v = 0; v < vertices.size(); ++v)
+    {
+      const double d = std::hypot(c[0] - vertices[v][0], c[1] - vertices[v][1], c[2] - vertices[v][2]);
+      if(d < best)
+        best = d, nearest = v;
+    }
+    EXPECT_LT(best, 1e-9 * spacing) << c[0] << " " << c[1] << " " << c[2];
+    hit[nearest] = true;
+  }
+  EXPECT_EQ(std::count(hit.begin(), hit.end(), true), 14) << slurp(corners);
+  // Every crease point is on an exact edge: two of its coordinates on face planes.
+  const std::vector<std::array<double, 3>> crease_points = read_points(slurp(creases), true);
+  EXPECT_GT(crease_points.size(), 100u);
+  for(const auto& p : crease_points)
+  {
+    int on_planes = 0;
+    for(int axis = 0; axis < 3; ++axis)
+      on_planes += std::min({std::abs(p[axis]), std::abs(p[axis] - 2), std::abs(p[axis] - b[axis])}) < 1e-9 * spacing;
+    EXPECT_GE(on_planes, 2) << p[0] << " " << p[1] << " " << p[2];
+  }
+  // Plain Marching Cubes chamfers the edges: a larger error, and no features line.
+  const Result plain = run(a + " " + bb + " --op difference --cells 32 --no-features");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("sharp features:"), std::string::npos) << plain.out;
+  EXPECT_GT(std::abs(number_after(plain.out, "volume ") - exact), 1e-4 * exact) << plain.out;
+  // A feature angle above the boxes' 90 degrees finds no feature.
+  const Result blunt = run(a + " " + bb + " --op difference --cells 32 --feature-angle 95");
+  ASSERT_EQ(blunt.status, 0) << blunt.err;
+  EXPECT_EQ(blunt.out.find("sharp features:"), std::string::npos) << blunt.out;
+}
+
+// A slab thinner than a cell united with a box: no lattice point is inside
+// the slab, so it would vanish silently.  The tool names it and the --cells
+// that resolves it; at those cells it is there, with its exact volume.
+TEST_F(CsgTool, ThinSlabIsReportedWithTheCellsThatResolveIt)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 1));
+  // [1.5, 2] x [0, 1] x [0.1, 0.14]; at 16 cells (r = 0.125) the lattice
+  // planes are at z = -0.17 + 0.125 k: none between 0.1 and 0.14.
+  std::ostringstream o;
+  o.precision(17);
+  o << "OFF\n8 12 0\n";
+  for(int k = 0; k < 8; ++k)
+    o << 1.5 + 0.5 * (k & 1) << ' ' << 1.0 * ((k >> 1) & 1) << ' ' << 0.1 + 0.04 * ((k >> 2) & 1) << "\n";
+  const std::string faces = box_off(0, 0, 0, 1);
+  o << faces.substr(faces.find("3 0 2 3"));
+  const std::string slab = write("slab.off", o.str());
+  const std::string out = m_dir + "/u.off";
+  const Result r = run(a + " " + slab + " --op union --cells 16 -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(is_one_clean_line(r.err)) << r.err;
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(slab + " (B) component 0"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("1 not resolved"), std::string::npos) << r.out;
+  EXPECT_NEAR(number_after(r.out, "volume "), 1, 1e-7) << r.out; // the slab is missing
+  EXPECT_TRUE(std::ifstream(out).good());
+  const double cells = number_after(r.err, "--cells ");
+  ASSERT_GT(cells, 16) << r.err;
+  EXPECT_LT(cells, 400) << r.err;
+  // --strict: an error, exit 1, nothing written.
+  const std::string strict_out = m_dir + "/strict.off";
+  const Result strict = run(a + " " + slab + " --op union --cells 16 --strict -o " + strict_out);
+  EXPECT_EQ(strict.status, 1) << strict.err;
+  EXPECT_NE(strict.err.find("error: "), std::string::npos) << strict.err;
+  EXPECT_FALSE(std::ifstream(strict_out).good());
+  // At the suggested cells the slab is there: 1 + 0.5 * 0.04.
+  const Result fine = run(a + " " + slab + " --op union --strict --cells " + std::to_string(int(cells)));
+  ASSERT_EQ(fine.status, 0) << fine.err;
+  EXPECT_TRUE(fine.err.empty()) << fine.err;
+  EXPECT_NEAR(number_after(fine.out, "volume "), 1.02, 1e-3) << fine.out;
+}
+
+// An intersection of disjoint boxes is empty for the right reason, but the
+// tool cannot know: not a plain success (a warning; --strict: exit 1).
+// A & !A is empty whatever the inputs: no warning.
+TEST_F(CsgTool, EmptyResultFromNonEmptyInputsIsNotAPlainSuccess)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 1)), b = write("b.off", box_off(3, 0, 0, 1));
+  const Result r = run(a + " " + b + " --op intersection --cells 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("the result is empty"), std::string::npos) << r.out;
+  EXPECT_TRUE(is_one_clean_line(r.err)) << r.err;
+  EXPECT_NE(r.err.find("warning: the result is empty although the inputs are not"), std::string::npos) << r.err;
+  EXPECT_EQ(run(a + " " + b + " --op intersection --cells 16 --strict").status, 1);
+  const Result none = run(a + " --expr \"A & !A\" --cells 16 --strict");
+  EXPECT_EQ(none.status, 0) << none.err;
+  EXPECT_TRUE(none.err.empty()) << none.err;
+}
+
+// Manifold's GenericTwinBooleanTest7081 pair at 128 cells (an empty union
+// before the check, exit 0): its main shell is a sheet about 1.2 units thick
+// in a box 15000 units long (spacing 115), its 12 small pieces cross no
+// lattice edge.  Now they are named, and the empty union is not a success
+// under --strict.  (Under a second: no slow label needed.)
+TEST_F(CsgTool, GenericTwinUnionNamesWhatTheLatticeMisses)
+{
+  const std::string data = std::string(BISO_SHARED_DATA_DIR) + "/boolean_pairs/Generic_Twin_7081.1.t0_";
+  const Result r = run(data + "left.obj " + data + "right.obj --op union --cells 128");
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.out << r.err;
+  EXPECT_NE(r.err.find("is not resolved by the lattice"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("left.obj (A) component 0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the result is empty although the inputs are not"), std::string::npos) << r.err;
+  const Result strict = run(data + "left.obj " + data + "right.obj --op union --cells 128 --strict");
+  EXPECT_EQ(strict.status, 1) << strict.out << strict.err;
 }
 
 } // namespace

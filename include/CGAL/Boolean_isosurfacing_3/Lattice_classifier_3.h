@@ -38,12 +38,16 @@ namespace Boolean_isosurfacing {
 /// edge from point `index - 1` to point `index` of its line (indices along
 /// the line's axis).  `position` is the coordinate along the axis, computed
 /// in double and clamped to the edge; it is *not* used for any
-/// combinatorial decision (those are exact).
+/// combinatorial decision (those are exact).  `triangle` is the crossed
+/// triangle: its number among the triangles of all meshes, mesh 0 first, each
+/// mesh's faces in `faces()` order (it gives `marching_cubes_csg()` the exact
+/// tangent plane of the crossing).
 struct Lattice_crossing
 {
   double position;
   std::uint32_t index;
   std::uint32_t mesh;
+  std::uint32_t triangle = 0;
 };
 
 /*!
@@ -359,6 +363,7 @@ private:
     std::uint32_t u;
     std::uint32_t index;
     std::uint32_t mesh;
+    std::uint32_t triangle;
 
     friend bool operator<(const Row_crossing& a, const Row_crossing& b)
     {
@@ -368,7 +373,9 @@ private:
         return a.index < b.index;
       if(a.position != b.position)
         return a.position < b.position;
-      return a.mesh < b.mesh;
+      if(a.mesh != b.mesh)
+        return a.mesh < b.mesh;
+      return a.triangle < b.triangle;
     }
   };
 
@@ -588,7 +595,7 @@ private:
               const std::size_t index = internal::crossing_index(t, axis, coordinates[axis].data(), na, p, guess);
               if(index >= na || (index == 0 && axis != 0))
                 continue; // not on a lattice edge, and no effect on the classification
-              out.push_back(Row_crossing{position, ju, std::uint32_t(index), t.mesh});
+              out.push_back(Row_crossing{position, ju, std::uint32_t(index), t.mesh, row_triangles[e]});
             }
           }
           sort_row(out, nu);
@@ -640,7 +647,7 @@ private:
       std::size_t out = row_offset[r];
       for(const Row_crossing& c : rows[r])
       {
-        crossings[out++] = Crossing{c.position, c.index, c.mesh};
+        crossings[out++] = Crossing{c.position, c.index, c.mesh, c.triangle};
         ++line_begin[c.u + nu * r + 1];
       }
       std::vector<Row_crossing>().swap(rows[r]);

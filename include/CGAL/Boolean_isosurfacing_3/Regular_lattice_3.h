@@ -66,6 +66,15 @@ public:
   /// arrays of the algorithms stay addressable on every platform.
   static constexpr std::size_t max_number_of_points = std::size_t(1) << 31;
 
+  /// The default offset of `enclosing()`, in cells: (3 - sqrt 5) / 2, the
+  /// golden section.  Without it the lattice planes would pass through the
+  /// box's extreme coordinates, which are the planes of the axis-aligned
+  /// faces of CAD meshes (and often of other "round" coordinates): a
+  /// Marching Cubes vertex then sits on a lattice point and the output has
+  /// zero-area triangles.  The golden section keeps the planes away from every
+  /// coordinate at a simple rational fraction of the spacing from the box.
+  static constexpr double default_offset_cells = 0.381966011250105;
+
   /// Points `origin + (i, j, k) * spacing`, `0 <= i < number_of_points[0]` etc.
   /// \throws Invalid_input_error if `spacing` is not positive and finite, an
   /// origin coordinate is not finite, a count is 0, or the spacing is too
@@ -118,20 +127,29 @@ public:
   /// `margin_cells` is at or below the box minimum and the last
   /// `margin_cells + 1` points are at or above the box maximum.  With
   /// `margin_cells >= 1` the lattice boundary lies strictly outside the box,
-  /// which is what makes a Marching Cubes output closed.
+  /// which is what makes a Marching Cubes output closed.  Point
+  /// `margin_cells` is `offset_cells * spacing` below the box minimum
+  /// (rounded down): the default offset keeps the box's faces off the lattice
+  /// planes (see `default_offset_cells`); 0 puts a lattice plane on each
+  /// box minimum.
+  /// \pre `0 <= offset_cells < 1`
   /// \throws Invalid_input_error if the box is empty or not finite, or the
   /// spacing is not positive and finite (or too small for the coordinates).
   /// \throws Lattice_too_large_error beyond `max_number_of_points` points.
-  static Regular_lattice_3 enclosing(const CGAL::Bbox_3& box, double spacing, std::size_t margin_cells = 1)
+  static Regular_lattice_3 enclosing(const CGAL::Bbox_3& box, double spacing, std::size_t margin_cells = 1,
+                                     double offset_cells = default_offset_cells)
   {
     check_box(box);
+    if(!(offset_cells >= 0 && offset_cells < 1))
+      throw Invalid_input_error("the lattice offset must be in [0, 1) cells, got " +
+                                internal::to_string_precise(offset_cells));
     if(!(std::isfinite(spacing) && spacing > 0))
       throw Invalid_input_error("the lattice spacing must be positive and finite, got " +
                                 internal::to_string_precise(spacing));
     // Size check in double first: the counts may not fit any integer type.
     double estimated_points = 1;
     for(int a = 0; a < 3; ++a)
-      estimated_points *= std::floor((box.max(a) - box.min(a)) / spacing) + 2.0 * double(margin_cells) + 2.0;
+      estimated_points *= std::floor((box.max(a) - box.min(a)) / spacing) + 2.0 * double(margin_cells) + 3.0;
     if(!(estimated_points <= double(max_number_of_points)))
       check_size(estimated_points, " with spacing " + internal::to_string_precise(spacing) + " around the box " +
                                        box_to_string(box));
@@ -141,7 +159,7 @@ public:
     for(int a = 0; a < 3; ++a)
     {
       const double low = box.min(a), high = box.max(a);
-      double o = low - double(margin_cells) * spacing;
+      double o = low - (double(margin_cells) + offset_cells) * spacing;
       // Make point `margin_cells` no larger than the box minimum despite rounding.
       while(internal::lattice_coordinate(o, spacing, margin_cells) > low)
         o = std::nextafter(o, -std::numeric_limits<double>::infinity());
@@ -168,7 +186,8 @@ public:
   /// finite, or a single point.
   /// \throws Lattice_too_large_error as `enclosing()`.
   static Regular_lattice_3 enclosing_with_cells(const CGAL::Bbox_3& box, std::size_t cells,
-                                                std::size_t margin_cells = 1)
+                                                std::size_t margin_cells = 1,
+                                                double offset_cells = default_offset_cells)
   {
     check_box(box);
     if(cells == 0)
@@ -177,7 +196,7 @@ public:
     if(!(longest > 0))
       throw Invalid_input_error("the box " + box_to_string(box) +
                                 " is a single point: give the lattice spacing explicitly");
-    return enclosing(box, longest / double(cells), margin_cells);
+    return enclosing(box, longest / double(cells), margin_cells, offset_cells);
   }
 
   /// The points of this lattice whose z index is in `[k_begin, k_end]`, as

@@ -14,9 +14,13 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Csg_edge_point.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Collapse_short_edges.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Resolution_check.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/tags.h>
@@ -30,6 +34,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -65,10 +70,51 @@ struct Marching_cubes_csg_statistics
   /// `Regular_lattice_3::enclosing()` (margin >= 1) around the meshes and an
   /// expression that is false outside all of them (`evaluate(0) == false`).
   std::size_t boundary_points_inside = 0;
+  /// Sharp features (named parameter `sharp_features`): polygons fanned
+  /// around a feature vertex, of which corners (rank 3); polygons whose
+  /// normals disagree but that keep the plain triangulation (no feature point
+  /// in the cube, or the fan would fold); face segments flipped to join
+  /// neighbouring feature vertices; crease edges output.
+  std::size_t feature_vertices = 0;
+  /// Feature vertices of rank 3 (corners).
+  std::size_t corner_vertices = 0;
+  /// Polygons whose normals disagree by more than the feature angle but that
+  /// keep the plain triangulation.
+  std::size_t plain_feature_polygons = 0;
+  /// Of `plain_feature_polygons`, those whose fan would have folded.
+  std::size_t folded_feature_polygons = 0;
+  /// Face segments flipped to join the feature vertices of neighbouring cubes.
+  std::size_t flipped_edges = 0;
+  /// Flipped edges whose dihedral angle is above the feature angle: the output creases.
+  std::size_t crease_edges = 0;
+  /// Edges between two edge points shorter than `sliver_edge_length` cells
+  /// that were collapsed (see the named parameter).
+  std::size_t collapsed_edges = 0;
+  /// Resolution check (named parameter `resolution_check`, default true):
+  /// the connected components of the inputs inside the lattice's box that
+  /// were judged, and those the lattice does not resolve -- no crossing with
+  /// a lattice edge, or (lattice points inside) x spacing^3 off the exact
+  /// volume by more than a factor 2.  Such a component may be missing from
+  /// the output, or be much too thick there.
+  std::size_t checked_components = 0;
+  /// The components the lattice does not resolve (see `checked_components`).
+  std::vector<Marching_cubes_csg_component_report> under_resolved_components;
+};
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// The sharp features of a `marching_cubes_csg()` soup (named parameter
+/// `sharp_feature_output(&features)`): crease edges as pairs of output vertex
+/// indices (smaller first), and corner vertices.  Indices are offset like the
+/// triangles'.
+struct Marching_cubes_csg_features
+{
+  /// Crease edges, as pairs of output vertex indices (smaller first).
+  std::vector<std::array<std::size_t, 2>> crease_edges;
+  /// Corner vertices (rank-3 feature vertices).
+  std::vector<std::size_t> corner_vertices;
 };
 
 namespace internal {
-
 
 template <typename T>
 struct Is_std_array : std::false_type {};
@@ -120,6 +166,9 @@ struct Csg_soup
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 3>> triangles;
+  // Crease edges (vertex pairs, smaller index first) and corner vertices.
+  std::vector<std::array<std::size_t, 2>> crease_edges;
+  std::vector<std::size_t> corner_vertices;
 };
 
 // The phases after the classification: output states, vertices, cubes.
@@ -127,9 +176,16 @@ template <typename ConcurrencyTag>
 class Marching_cubes_csg_builder
 {
 public:
-  Marching_cubes_csg_builder(const Lattice_classifier_3& classifier, const Boolean_expression& expression)
+  typedef Marching_cubes_csg::Vector_3d Vector_3d;
+  typedef Marching_cubes_csg::Feature_settings Feature_settings;
+  typedef Marching_cubes_csg::Triangle_tangent Triangle_tangent;
+
+  // `tangents` (one per input triangle, in the classifier's numbering) is
+  // only read when `features.enabled`.
+  Marching_cubes_csg_builder(const Lattice_classifier_3& classifier, const Boolean_expression& expression,
+                             const Feature_settings& features, const std::vector<Triangle_tangent>& tangents)
     : m_classifier(classifier), m_lattice(classifier.lattice()), m_inside(expression),
-      m_n(m_lattice.number_of_points())
+      m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents)
   {}
 
   // Bytes per lattice point and per xy-plane that the builder allocates on
@@ -204,18 +260,27 @@ public:
     if(m_vertex_offset[nz] >= (std::size_t(1) << 32) && sizeof(std::size_t) < 8)
       throw Lattice_too_large_error("too many output vertices for this platform");
     points.resize(m_vertex_offset[nz]);
+    if(m_features.enabled)
+      m_normals.resize(points.size());
     concurrent_for<ConcurrencyTag>(
         nz,
         [&](std::size_t k) {
           std::size_t id = m_vertex_offset[k];
           for_each_vertex_edge(k, [&](std::size_t i, std::size_t j, int axis, std::size_t idx) {
-            points[id++] = vertex_position(i, j, k, axis, idx);
+            points[id] = vertex_position(i, j, k, axis, idx, m_features.enabled ? &m_normals[id] : nullptr);
+            ++id;
           });
         },
         progress);
   }
 
-  void compute_triangles(std::vector<std::array<std::size_t, 3>>& triangles, const Progress& progress)
+  // With sharp features, `points` (the edge vertices) gets the feature
+  // vertices appended, and `soup_creases`, `soup_corners` the crease edges and
+  // corner vertices.
+  void compute_triangles(std::vector<std::array<double, 3>>& points,
+                         std::vector<std::array<std::size_t, 3>>& triangles,
+                         std::vector<std::array<std::size_t, 2>>& soup_creases, std::vector<std::size_t>& soup_corners,
+                         Marching_cubes_csg_statistics& statistics, const Progress& progress)
   {
     if(m_n[0] < 2 || m_n[1] < 2 || m_n[2] < 2)
       return;
@@ -223,6 +288,37 @@ public:
     // The chunks only change who computes what: the output is the
     // concatenation of the layers in order, whatever the chunking.
     const std::size_t chunks = (std::min)(layers, is_parallel_tag<ConcurrencyTag>() ? 8 * concurrency<ConcurrencyTag>() : 1);
+    if(m_features.enabled)
+    {
+      std::vector<Marching_cubes_csg::Feature_chunk> buffers(chunks);
+      concurrent_for<ConcurrencyTag>(
+          chunks,
+          [&](std::size_t c) {
+            triangulate_feature_layers(layers * c / chunks, layers * (c + 1) / chunks, points, buffers[c]);
+          },
+          progress);
+      for(const auto& b : buffers)
+      {
+        statistics.plain_feature_polygons += b.plain.no_point + b.plain.folded;
+        statistics.folded_feature_polygons += b.plain.folded;
+      }
+      std::vector<Marching_cubes_csg::Flipped_edge> flipped;
+      const std::size_t first_feature = points.size();
+      const std::vector<Marching_cubes_csg::Feature_kind> kinds =
+          Marching_cubes_csg::merge_feature_chunks(buffers, points, m_normals, triangles, flipped);
+      statistics.feature_vertices = kinds.size();
+      statistics.flipped_edges = flipped.size();
+      for(std::size_t f = 0; f < kinds.size(); ++f)
+        if(kinds[f] == Marching_cubes_csg::Feature_kind::CORNER)
+          soup_corners.push_back(first_feature + f);
+      statistics.corner_vertices = soup_corners.size();
+      for(const Marching_cubes_csg::Flipped_edge& e : flipped)
+        if(e.cos_dihedral < m_features.cos_feature_angle)
+          soup_creases.push_back({{e.v0, e.v1}});
+      statistics.crease_edges = soup_creases.size();
+      std::vector<Vector_3d>().swap(m_normals);
+      return;
+    }
     std::vector<std::vector<std::array<std::size_t, 3>>> buffers(chunks);
     concurrent_for<ConcurrencyTag>(
         chunks,
@@ -277,7 +373,10 @@ private:
     }
   }
 
-  std::array<double, 3> vertex_position(std::size_t i, std::size_t j, std::size_t k, int axis, std::size_t idx) const
+  // The vertex of a lattice edge, and (if `normal` is not null) the outward
+  // unit normal of the input triangle it lies on.
+  std::array<double, 3> vertex_position(std::size_t i, std::size_t j, std::size_t k, int axis, std::size_t idx,
+                                        Vector_3d* normal) const
   {
     const std::size_t stride = axis == 0 ? 1 : (axis == 1 ? m_n[0] : m_n[0] * m_n[1]);
     const bool from_low = m_state[idx] != 0;
@@ -289,6 +388,8 @@ private:
                              "of its ends (this is a bug)");
     std::array<double, 3> p{{m_lattice.coordinate(0, i), m_lattice.coordinate(1, j), m_lattice.coordinate(2, k)}};
     p[axis] = crossings[c].position;
+    if(normal != nullptr)
+      *normal = Marching_cubes_csg::outward_normal(m_tangents[crossings[c].triangle], axis, from_low);
     return p;
   }
 
@@ -355,6 +456,59 @@ private:
     }
   }
 
+  // As triangulate_layers(), with the polygons whose normals disagree fanned
+  // around their feature vertex.
+  void triangulate_feature_layers(std::size_t first, std::size_t last, const std::vector<Vector_3d>& points,
+                                  Marching_cubes_csg::Feature_chunk& out) const
+  {
+    if(first >= last)
+      return;
+    const Marching_cubes_table& table = Marching_cubes_table::instance();
+    const std::size_t nx = m_n[0], ny = m_n[1];
+    const std::size_t plane = nx * ny;
+    std::vector<std::uint32_t> low(3 * plane), high(3 * plane);
+    number_plane_vertices(first, low);
+    std::array<std::size_t, 8> corner_offset;
+    for(int c = 0; c < 8; ++c)
+      corner_offset[c] = std::size_t(c & 1) + nx * std::size_t((c >> 1) & 1) + plane * std::size_t((c >> 2) & 1);
+    for(std::size_t k = first; k < last; ++k)
+    {
+      number_plane_vertices(k + 1, high);
+      const std::array<const std::vector<std::uint32_t>*, 2> ids{{&low, &high}};
+      const std::array<std::size_t, 2> offset{{m_vertex_offset[k], m_vertex_offset[k + 1]}};
+      for(std::size_t j = 0; j + 1 < ny; ++j)
+      {
+        const std::uint8_t kind = m_row_kind[j + ny * k];
+        if(uniform_rows(kind, m_row_kind[j + 1 + ny * k]) && uniform_rows(kind, m_row_kind[j + ny * (k + 1)]) &&
+           uniform_rows(kind, m_row_kind[j + 1 + ny * (k + 1)]))
+          continue;
+        std::size_t idx = m_lattice.linear_index(0, j, k);
+        for(std::size_t i = 0; i + 1 < nx; ++i, ++idx)
+        {
+          unsigned code = 0;
+          for(int c = 0; c < 8; ++c)
+            code |= unsigned(m_state[idx + corner_offset[c]]) << c;
+          if(code == 0 || code == 255)
+            continue;
+          const auto vertex_of = [&](int e) {
+            CGAL_assertion(!Marching_cubes_table::is_centre_vertex(unsigned(e)));
+            const std::array<int, 3> o = cube_edge_origin_offset(e);
+            const std::size_t entry =
+                3 * ((i + std::size_t(o[0])) + nx * (j + std::size_t(o[1]))) + std::size_t(cube_edge_axis(e));
+            return std::size_t(offset[o[2]] + (*ids[o[2]])[entry]);
+          };
+          const Vector_3d cube_low{{m_lattice.coordinate(0, i), m_lattice.coordinate(1, j), m_lattice.coordinate(2, k)}};
+          const Vector_3d cube_high{
+              {m_lattice.coordinate(0, i + 1), m_lattice.coordinate(1, j + 1), m_lattice.coordinate(2, k + 1)}};
+          const Marching_cubes_csg::Feature_decision decide(cube_low, cube_high, m_features,
+                                                            out.plain);
+          Marching_cubes_csg::triangulate_feature_cube(table, code, vertex_of, points, m_normals, decide, out);
+        }
+      }
+      std::swap(low, high);
+    }
+  }
+
   const Lattice_classifier_3& m_classifier;
   const Regular_lattice_3& m_lattice;
   Expression_evaluator m_inside;
@@ -362,7 +516,26 @@ private:
   std::vector<std::uint8_t, Default_init_allocator<std::uint8_t>> m_state;
   std::vector<std::uint8_t> m_row_kind; // per x row (j + ny * k): 0, 1 or MIXED_ROW
   std::vector<std::size_t> m_vertex_offset;
+  Feature_settings m_features;
+  const std::vector<Triangle_tangent>& m_tangents;
+  std::vector<Vector_3d> m_normals; // outward normal of each edge vertex (features only)
 };
+
+// The named parameters `sharp_features` (default true) and `feature_angle`
+// (degrees, default 30).
+template <typename NamedParameters>
+Marching_cubes_csg::Feature_settings feature_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Marching_cubes_csg::Feature_settings settings;
+  settings.enabled = choose_parameter(get_parameter(np, internal_np::sharp_features), true);
+  const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 30.0);
+  if(!(angle > 0 && angle < 180))
+    throw Invalid_input_error("the feature angle must be in (0, 180) degrees, got " + std::to_string(angle));
+  settings.cos_feature_angle = std::cos(angle * 3.14159265358979323846 / 180.0);
+  return settings;
+}
 
 template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters>
 Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& meshes,
@@ -392,6 +565,13 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   auto start = std::chrono::steady_clock::now();
   std::size_t read_meshes = 0;
   std::vector<Lattice_triangle> triangles = Lattice_classifier_3::read_meshes(meshes, read_meshes);
+  const bool check_resolution = choose_parameter(get_parameter(np, internal_np::resolution_check), true);
+  const Marching_cubes_csg::Component_labels components =
+      check_resolution ? Marching_cubes_csg::label_components(triangles) : Marching_cubes_csg::Component_labels();
+  const Marching_cubes_csg::Feature_settings features = feature_settings(np);
+  const std::vector<Marching_cubes_csg::Triangle_tangent> tangents =
+      features.enabled ? Marching_cubes_csg::triangle_tangents(triangles)
+                       : std::vector<Marching_cubes_csg::Triangle_tangent>();
   typedef Marching_cubes_csg_builder<ConcurrencyTag> Builder;
   const std::size_t plane = lattice.number_of_points(0) * lattice.number_of_points(1);
   const std::size_t reserved = lattice.total_number_of_points() * Builder::bytes_per_point() +
@@ -402,18 +582,29 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   if(classifier.number_of_inconsistent_edges() != 0)
     throw std::logic_error("marching_cubes_csg: crossings inconsistent with the classification (this is a bug)");
 #endif
-  Builder builder(classifier, expression);
+  Builder builder(classifier, expression, features, tangents);
   statistics.boundary_points_inside = builder.compute_states(progress.part(0.6, 0.65));
   statistics.crossings = classifier.number_of_crossings();
+  if(check_resolution)
+    statistics.checked_components = Marching_cubes_csg::under_resolved_components(
+        components, classifier, statistics.under_resolved_components);
   const double seconds_yz = classifier.seconds(1) + classifier.seconds(2);
   statistics.seconds_classification = seconds_since(start) - seconds_yz;
 
   start = std::chrono::steady_clock::now();
   builder.compute_vertices(soup.points, progress.part(0.65, 0.8));
+  const std::size_t edge_vertices = soup.points.size();
   statistics.seconds_edges = seconds_yz + seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  builder.compute_triangles(soup.triangles, progress.part(0.8, 0.98));
+  builder.compute_triangles(soup.points, soup.triangles, soup.crease_edges, soup.corner_vertices, statistics,
+                            progress.part(0.8, 0.98));
+  const double sliver = choose_parameter(get_parameter(np, internal_np::sliver_edge_length), features.enabled ? 0.1 : 0.0);
+  if(!(sliver >= 0 && sliver < 0.5))
+    throw Invalid_input_error("sliver_edge_length must be in [0, 0.5) cells, got " + std::to_string(sliver));
+  if(sliver > 0)
+    statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges(
+        soup.points, soup.triangles, edge_vertices, sliver * lattice.spacing(), soup.crease_edges, soup.corner_vertices);
   statistics.output_vertices = soup.points.size();
   statistics.output_triangles = soup.triangles.size();
   statistics.seconds_triangulation = seconds_since(start);
@@ -475,10 +666,39 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
  *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{sharp_features}
+ *     \cgalParamDescription{Extended Marching Cubes feature vertices, creases and corners from the
+ *       exact crossing normals (doc/Boolean_isosurfacing_3/features.md); `false`: plain Marching Cubes}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{feature_angle}
+ *     \cgalParamDescription{a polygon whose crossing normals differ by more than this many degrees
+ *       gets a feature vertex; in (0, 180)}
+ *     \cgalParamType{`double`} \cgalParamDefault{30}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sliver_edge_length}
+ *     \cgalParamDescription{edges between two edge points shorter than this many cells are
+ *       collapsed (link condition, no triangle turned over); in [0, 0.5)}
+ *     \cgalParamType{`double`} \cgalParamDefault{0.1 with sharp features, 0 without}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{sharp_feature_output}
+ *     \cgalParamDescription{receives the crease edges and corner vertices}
+ *     \cgalParamType{`Marching_cubes_csg_features*`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{resolution_check}
+ *     \cgalParamDescription{judge every input component against the lattice
+ *       (`Marching_cubes_csg_statistics::under_resolved_components`)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
+ * With sharp features the vertex numbering above holds for the edge
+ * vertices; the feature vertices follow them, and short-edge collapses
+ * renumber the result compactly.
+ *
  * \throws Invalid_input_error if `expression.number_of_variables() !=
- * meshes.size()`; the exceptions of `Lattice_classifier_3::classify()`.
+ * meshes.size()`, for a feature angle outside (0, 180) or a sliver length
+ * outside [0, 0.5); the exceptions of `Lattice_classifier_3::classify()`.
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange, typename PointRange,
           typename TriangleRange, typename NamedParameters = CGAL::parameters::Default_named_parameters,
@@ -500,6 +720,17 @@ Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes
   std::vector<std::array<double, 3>>().swap(soup.points);
   for(const std::array<std::size_t, 3>& t : soup.triangles)
     triangles.push_back(internal::make_output_triangle<Triangle>({{t[0] + first, t[1] + first, t[2] + first}}));
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sharp_feature_output_t>::value)
+  {
+    Marching_cubes_csg_features* features = parameters::get_parameter(np, internal_np::sharp_feature_output);
+    if(features != nullptr)
+    {
+      for(const std::array<std::size_t, 2>& e : soup.crease_edges)
+        features->crease_edges.push_back({{e[0] + first, e[1] + first}});
+      for(std::size_t v : soup.corner_vertices)
+        features->corner_vertices.push_back(v + first);
+    }
+  }
   statistics.seconds_triangulation += internal::seconds_since(start) - statistics.seconds_classification -
                                       statistics.seconds_edges - statistics.seconds_triangulation;
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::progress_t>::value)
@@ -536,12 +767,47 @@ Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes
 {
   typedef typename boost::property_traits<
       typename boost::property_map<MutableFaceGraph, CGAL::vertex_point_t>::type>::value_type Point;
+  typedef boost::graph_traits<MutableFaceGraph> Graph_traits;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
   std::vector<Point> points;
   std::vector<std::array<std::size_t, 3>> triangles;
+  Marching_cubes_csg_features features;
   const auto start = std::chrono::steady_clock::now();
-  Marching_cubes_csg_statistics statistics =
-      marching_cubes_csg<ConcurrencyTag>(meshes, expression, lattice, points, triangles, np);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, output);
+  Marching_cubes_csg_statistics statistics = marching_cubes_csg<ConcurrencyTag>(
+      meshes, expression, lattice, points, triangles, parameters::sharp_feature_output(&features, np));
+  // As PMP::polygon_soup_to_polygon_mesh(), keeping the vertex of each point
+  // for the feature maps.
+  const auto vpm = get(CGAL::vertex_point, output);
+  std::vector<vertex_descriptor> vertex(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    vertex[i] = add_vertex(output);
+    put(vpm, vertex[i], points[i]);
+  }
+  std::vector<vertex_descriptor> face(3);
+  for(const std::array<std::size_t, 3>& t : triangles)
+  {
+    for(int v = 0; v < 3; ++v)
+      face[v] = vertex[t[v]];
+    if(CGAL::Euler::add_face(face, output) == Graph_traits::null_face())
+      throw std::logic_error("marching_cubes_csg: the output soup is not a 2-manifold (this is a bug)");
+  }
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
+  {
+    auto ecm = parameters::get_parameter(np, CGAL::internal_np::edge_is_constrained);
+    for(const std::array<std::size_t, 2>& e : features.crease_edges)
+    {
+      const auto h = halfedge(vertex[e[0]], vertex[e[1]], output);
+      if(h.second)
+        put(ecm, edge(h.first, output), true);
+    }
+  }
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_is_constrained_t>::value)
+  {
+    auto vcm = parameters::get_parameter(np, CGAL::internal_np::vertex_is_constrained);
+    for(std::size_t v : features.corner_vertices)
+      put(vcm, vertex[v], true);
+  }
   statistics.seconds_triangulation += internal::seconds_since(start) - statistics.seconds_classification -
                                       statistics.seconds_edges - statistics.seconds_triangulation;
   return statistics;

@@ -25,6 +25,13 @@
 // included.  So the range above sends down the sorted edge ids of its first
 // plane's vertices (`bottom_edges`), and a top edge's global index is the
 // offset of the range above plus its rank in that list.
+//
+// Plain Marching Cubes only: the sharp features of `marching_cubes_csg()`
+// (doc/Boolean_isosurfacing_3/features.md) number their vertices after all
+// edge vertices, flip edges across the faces between cubes (also between two
+// ranges) and collapse short edges on the whole soup, none of which a range
+// can do alone.  So here `sharp_features` defaults to false, and true is
+// refused rather than silently ignored.
 
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
 
@@ -97,7 +104,9 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  * Marching Cubes CSG (`marching_cubes_csg()`) restricted to cube layers
  * `[first_layer, last_layer)` of `lattice`: classifies only the lattice
  * lines of planes `first_layer .. last_layer` with the triangles that can
- * meet them, and returns that part of the sequential output in `range`.
+ * meet them, and returns that part of the sequential output in `range`:
+ * the output of `marching_cubes_csg()` with `sharp_features(false)`
+ * (sharp features are not available on slab ranges).
  *
  * \param meshes the closed triangle meshes (the same for every range)
  * \param expression a Boolean expression with `meshes.size()` variables
@@ -111,10 +120,15 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{sharp_features}
+ *     \cgalParamDescription{must be `false`: `true` throws `Invalid_input_error`}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \pre `first_layer <= last_layer <= lattice.number_of_points(2) - 1`
- * \throws the exceptions of `marching_cubes_csg()`.
+ * \throws the exceptions of `marching_cubes_csg()`, and Invalid_input_error
+ * for `sharp_features(true)`.
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -129,6 +143,9 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   if(nz < 2 || !(first_layer <= last_layer && last_layer <= nz - 1))
     throw Invalid_input_error("the cube layers [" + std::to_string(first_layer) + ", " + std::to_string(last_layer) +
                               ") are not within the lattice's " + std::to_string(nz > 0 ? nz - 1 : 0) + " layers");
+  if(choose_parameter(get_parameter(np, internal_np::sharp_features), false))
+    throw Invalid_input_error("sharp features are not available on slab ranges (distributed Marching Cubes CSG): "
+                              "pass sharp_features(false)");
   range = Marching_cubes_csg_slab_range();
   range.first_layer = first_layer;
   range.last_layer = last_layer;
@@ -165,7 +182,10 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
       sub.total_number_of_points() * Builder::bytes_per_point() + plane * Builder::bytes_per_plane_point();
   const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
       std::move(triangles), number_of_meshes, sub, max_memory, reserved, internal::Progress());
-  Builder builder(classifier, expression);
+  internal::Marching_cubes_csg::Feature_settings plain;
+  plain.enabled = false;
+  const std::vector<internal::Marching_cubes_csg::Triangle_tangent> no_tangents;
+  Builder builder(classifier, expression, plain, no_tangents);
   builder.compute_states(internal::Progress());
   range.statistics.lattice_points = sub.total_number_of_points();
   range.statistics.crossings = classifier.number_of_crossings();
@@ -175,7 +195,10 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   builder.compute_vertices(range.points, internal::Progress());
   range.statistics.seconds_edges = internal::seconds_since(start);
   start = std::chrono::steady_clock::now();
-  builder.compute_triangles(range.triangles, internal::Progress());
+  std::vector<std::array<std::size_t, 2>> no_creases;
+  std::vector<std::size_t> no_corners;
+  builder.compute_triangles(range.points, range.triangles, no_creases, no_corners, range.statistics,
+                            internal::Progress());
   range.statistics.seconds_triangulation = internal::seconds_since(start);
 
   // The boundary planes' vertex edges, from the states (the expression of

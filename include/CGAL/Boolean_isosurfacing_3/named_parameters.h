@@ -35,7 +35,12 @@
   X(minimum_closed_component_size_t, minimum_closed_component_size) \
   X(maximum_hole_size_t, maximum_hole_size)           \
   X(close_at_domain_boundary_t, close_at_domain_boundary) \
-  X(slab_layers_t, slab_layers)
+  X(slab_layers_t, slab_layers)                       \
+  X(sharp_features_t, sharp_features)                 \
+  X(feature_angle_t, feature_angle)                   \
+  X(sharp_feature_output_t, sharp_feature_output)   \
+  X(sliver_edge_length_t, sliver_edge_length)         \
+  X(resolution_check_t, resolution_check)
 
 namespace CGAL {
 namespace Boolean_isosurfacing {

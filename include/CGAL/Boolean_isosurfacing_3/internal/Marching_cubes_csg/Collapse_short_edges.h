@@ -1,0 +1,191 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MARCHING_CUBES_CSG_COLLAPSE_SHORT_EDGES_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MARCHING_CUBES_CSG_COLLAPSE_SHORT_EDGES_H
+
+// Slivers of Marching Cubes come from edge points that land next to a
+// lattice point: two points on two lattice edges of the same lattice point
+// are then much closer to each other than to the rest of their triangles.
+// Such an edge is collapsed (the higher-numbered point merges into the
+// lower-numbered one, whose position is an exact crossing too) when
+//  - the link condition holds (the two ends have exactly the two opposite
+//    vertices of the edge as common neighbours), so the closed 2-manifold
+//    stays a closed 2-manifold with the same topology;
+//  - no triangle that moves turns by more than 90 degrees, becomes
+//    degenerate, or becomes a worse sliver than it was (unless it stays
+//    above a quality of 1e-4).
+// Feature vertices are never moved.  Each vertex takes part in at most one
+// collapse, so the order of the collapses (sorted edges) cannot matter more
+// than one level, and the pass is O(triangles).
+
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_vertex.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+namespace internal {
+namespace Marching_cubes_csg {
+
+/// Collapses the edges between two edge points (indices below
+/// `first_feature_vertex`) shorter than `max_length`, then removes the merged
+/// points and the deleted triangles, renumbering the points in order (and
+/// the crease edges and corners with them).  Returns the number of collapses.
+inline std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<std::array<std::size_t, 3>>& triangles,
+                                        std::size_t first_feature_vertex, double max_length,
+                                        std::vector<std::array<std::size_t, 2>>& creases,
+                                        std::vector<std::size_t>& corners)
+{
+  typedef std::array<std::size_t, 2> Edge;
+  const double max_squared = max_length * max_length;
+  std::vector<Edge> candidates;
+  for(const auto& t : triangles)
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t a = t[i], b = t[(i + 1) % 3];
+      if(a < b && b < first_feature_vertex)
+      {
+        const Vector_3d d = sub3(points[a], points[b]);
+        if(dot3(d, d) < max_squared)
+          candidates.push_back({{a, b}});
+      }
+    }
+  if(candidates.empty())
+    return 0;
+  std::sort(candidates.begin(), candidates.end());
+
+  // Incident triangles of each vertex (compressed rows).
+  const std::size_t nv = points.size();
+  std::vector<std::size_t> first(nv + 1, 0);
+  for(const auto& t : triangles)
+    for(std::size_t v : t)
+      ++first[v + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    first[v + 1] += first[v];
+  std::vector<std::size_t> incident(first[nv]);
+  {
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      for(std::size_t v : triangles[t])
+        incident[fill[v]++] = t;
+  }
+  std::vector<unsigned char> touched(nv, 0), deleted(triangles.size(), 0);
+  std::vector<std::size_t> neighbours_u, neighbours_v, common;
+  const auto neighbours = [&](std::size_t v, std::vector<std::size_t>& out) {
+    out.clear();
+    for(std::size_t e = first[v]; e < first[v + 1]; ++e)
+      if(!deleted[incident[e]])
+        for(std::size_t w : triangles[incident[e]])
+          if(w != v)
+            out.push_back(w);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  };
+  std::size_t collapses = 0;
+  for(const Edge& e : candidates)
+  {
+    const std::size_t keep = e[0], gone = e[1];
+    if(touched[keep] || touched[gone])
+      continue;
+    // The two triangles of the edge, and the link condition.
+    std::array<std::size_t, 2> edge_triangles{{0, 0}}, opposite{{0, 0}};
+    int found = 0;
+    for(std::size_t x = first[gone]; x < first[gone + 1]; ++x)
+    {
+      const std::size_t t = incident[x];
+      if(deleted[t])
+        continue;
+      const auto& tr = triangles[t];
+      if(tr[0] == keep || tr[1] == keep || tr[2] == keep)
+      {
+        if(found == 2)
+        {
+          found = 3;
+          break;
+        }
+        edge_triangles[found] = t;
+        opposite[found] = tr[0] != keep && tr[0] != gone ? tr[0] : (tr[1] != keep && tr[1] != gone ? tr[1] : tr[2]);
+        ++found;
+      }
+    }
+    if(found != 2 || opposite[0] == opposite[1])
+      continue;
+    neighbours(gone, neighbours_u);
+    neighbours(keep, neighbours_v);
+    common.clear();
+    std::set_intersection(neighbours_u.begin(), neighbours_u.end(), neighbours_v.begin(), neighbours_v.end(),
+                          std::back_inserter(common));
+    if(common.size() != 2)
+      continue;
+    // The triangles of `gone` that move must keep their orientation.
+    bool ok = true;
+    for(std::size_t x = first[gone]; x < first[gone + 1] && ok; ++x)
+    {
+      const std::size_t t = incident[x];
+      if(deleted[t] || t == edge_triangles[0] || t == edge_triangles[1])
+        continue;
+      std::array<Vector_3d, 3> before, after;
+      for(int i = 0; i < 3; ++i)
+      {
+        before[i] = points[triangles[t][i]];
+        after[i] = triangles[t][i] == gone ? points[keep] : before[i];
+      }
+      const Vector_3d n0 = triangle_normal(before[0], before[1], before[2]);
+      const Vector_3d n1 = triangle_normal(after[0], after[1], after[2]);
+      // Never a turned or a worse sliver than before (below 1e-4, about 0.25 degree).
+      const double q1 = triangle_quality(after[0], after[1], after[2]);
+      ok = dot3(n0, n1) > 0 && (q1 > 1e-4 || q1 >= triangle_quality(before[0], before[1], before[2])) &&
+           q1 > degenerate_quality;
+    }
+    if(!ok)
+      continue;
+    for(std::size_t x = first[gone]; x < first[gone + 1]; ++x)
+      for(std::size_t& w : triangles[incident[x]])
+        if(w == gone)
+          w = keep;
+    deleted[edge_triangles[0]] = deleted[edge_triangles[1]] = 1;
+    touched[gone] = 2; // removed below
+    touched[keep] = 1;
+    ++collapses;
+  }
+  if(collapses == 0)
+    return 0;
+  // Renumber: the removed points are the `touched == 2` ones.
+  std::vector<std::size_t> new_index(nv);
+  std::size_t next = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    new_index[v] = next;
+    if(touched[v] != 2)
+      points[next++] = points[v];
+  }
+  points.resize(next);
+  std::size_t out = 0;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    if(!deleted[t])
+    {
+      std::array<std::size_t, 3> tr = triangles[t];
+      for(std::size_t& v : tr)
+        v = new_index[v];
+      triangles[out++] = tr;
+    }
+  triangles.resize(out);
+  for(auto& c : creases)
+    c = {{new_index[c[0]], new_index[c[1]]}};
+  for(auto& c : corners)
+    c = new_index[c];
+  return collapses;
+}
+
+} // namespace Marching_cubes_csg
+} // namespace internal
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MARCHING_CUBES_CSG_COLLAPSE_SHORT_EDGES_H

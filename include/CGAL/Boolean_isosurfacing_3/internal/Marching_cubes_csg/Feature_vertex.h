@@ -1,0 +1,252 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MARCHING_CUBES_CSG_FEATURE_VERTEX_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MARCHING_CUBES_CSG_FEATURE_VERTEX_H
+
+// The feature vertex of one Marching Cubes polygon, as in Extended Marching
+// Cubes (Kobbelt, Botsch, Schwanecke, Seidel, SIGGRAPH 2001): every vertex of
+// the polygon is an exact crossing of a lattice edge with a known input
+// triangle, so it comes with that triangle's tangent plane.  Where the
+// normals disagree (their cone is wider than the feature angle), the point
+// that minimises the sum of squared distances to the tangent planes is a
+// point of the crease (rank 2) or the corner (rank 3) that the polygon cuts
+// off.  The quadric is solved relative to the polygon's mass point with the
+// small eigenvalues truncated, so that a crease gives the point of the crease
+// line nearest to the mass point rather than an arbitrary, far one.
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+namespace internal {
+namespace Marching_cubes_csg {
+
+typedef std::array<double, 3> Vector_3d;
+
+inline double dot3(const Vector_3d& a, const Vector_3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vector_3d sub3(const Vector_3d& a, const Vector_3d& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline Vector_3d cross3(const Vector_3d& a, const Vector_3d& b)
+{
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+// The normal (b - a) x (c - a) of triangle abc, not normalised.
+inline Vector_3d triangle_normal(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
+{
+  return cross3(sub3(b, a), sub3(c, a));
+}
+
+/// What kind of feature a polygon's tangent planes describe.
+enum class Feature_kind : unsigned char { NONE = 0, CREASE = 2, CORNER = 3 };
+
+/// Parameters of the feature test.
+struct Feature_settings
+{
+  bool enabled = true;
+  /// cos of the feature angle: a polygon has a feature iff two of its normals
+  /// make a larger angle.
+  double cos_feature_angle = 0.8660254037844387; // 30 degrees
+  /// Singular values of the normal matrix below this fraction of the largest
+  /// are truncated (EMC uses 0.1 as well): planes closer than ~6 degrees
+  /// then count as one.
+  double singular_value_threshold = 0.1;
+};
+
+/// Whether the normals (unit vectors) of a polygon disagree by more than the feature angle.
+inline bool has_feature(const Vector_3d* normals, std::size_t n, const Feature_settings& settings)
+{
+  for(std::size_t a = 0; a < n; ++a)
+    for(std::size_t b = a + 1; b < n; ++b)
+      if(dot3(normals[a], normals[b]) < settings.cos_feature_angle)
+        return true;
+  return false;
+}
+
+/// The minimiser of the tangent-plane quadric of `n` points with unit
+/// normals, truncated to `rank` (2 or 3) around their mass point, and the
+/// direction of the crease line (the null direction for rank 2).  Returns
+/// false if the quadric has a smaller rank than requested.
+inline bool solve_feature_quadric(const Vector_3d* points, const Vector_3d* normals, std::size_t n, int rank,
+                                  const Feature_settings& settings, Vector_3d& result, Vector_3d& direction)
+{
+  Eigen::Vector3d mass = Eigen::Vector3d::Zero();
+  for(std::size_t i = 0; i < n; ++i)
+    mass += Eigen::Vector3d(points[i][0], points[i][1], points[i][2]);
+  mass /= double(n);
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d normal(normals[i][0], normals[i][1], normals[i][2]);
+    const Eigen::Vector3d p(points[i][0], points[i][1], points[i][2]);
+    a += normal * normal.transpose();
+    b += normal * normal.dot(p - mass);
+  }
+  // A = N^T N, so its eigenvalues are the squared singular values of N.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a);
+  if(solver.info() != Eigen::Success)
+    return false;
+  const Eigen::Vector3d lambda = solver.eigenvalues(); // increasing
+  const double largest = lambda[2];
+  if(!(largest > 0))
+    return false;
+  const double threshold = settings.singular_value_threshold * settings.singular_value_threshold * largest;
+  int available = 0;
+  for(int i = 0; i < 3; ++i)
+    if(lambda[i] >= threshold)
+      ++available;
+  if(available < rank)
+    return false;
+  Eigen::Vector3d x = mass;
+  for(int i = 3 - rank; i < 3; ++i)
+  {
+    const Eigen::Vector3d u = solver.eigenvectors().col(i);
+    x += (u.dot(b) / lambda[i]) * u;
+  }
+  result = {{x[0], x[1], x[2]}};
+  const Eigen::Vector3d d = solver.eigenvectors().col(0);
+  direction = {{d[0], d[1], d[2]}};
+  return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+}
+
+/// The rank the quadric supports (0, 1, 2 or 3) after truncation.
+inline int feature_quadric_rank(const Vector_3d* normals, std::size_t n, const Feature_settings& settings)
+{
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d normal(normals[i][0], normals[i][1], normals[i][2]);
+    a += normal * normal.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d lambda = solver.eigenvalues();
+  if(!(lambda[2] > 0))
+    return 0;
+  const double threshold = settings.singular_value_threshold * settings.singular_value_threshold * lambda[2];
+  int rank = 0;
+  for(int i = 0; i < 3; ++i)
+    if(lambda[i] >= threshold)
+      ++rank;
+  return rank;
+}
+
+// The parameter interval [t0, t1] of the line x + t d inside the box [low,
+// high] (empty iff t0 > t1).
+inline void clip_line_to_box(const Vector_3d& x, const Vector_3d& d, const Vector_3d& low, const Vector_3d& high,
+                             double& t0, double& t1)
+{
+  t0 = -std::numeric_limits<double>::infinity();
+  t1 = std::numeric_limits<double>::infinity();
+  for(int a = 0; a < 3; ++a)
+  {
+    if(d[a] == 0)
+    {
+      if(x[a] < low[a] || x[a] > high[a])
+        t0 = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    double s0 = (low[a] - x[a]) / d[a], s1 = (high[a] - x[a]) / d[a];
+    if(s0 > s1)
+      std::swap(s0, s1);
+    t0 = (std::max)(t0, s0);
+    t1 = (std::min)(t1, s1);
+  }
+}
+
+/// The feature vertex of a polygon inside the cube [low, high], if it has
+/// one.  A corner whose point falls outside the cube is tried as a crease (the
+/// cube then sees the planes of a corner that lies in a neighbour).  A crease
+/// point outside the cube is moved along the crease line to the nearest
+/// point of the line inside the cube (the crease may clip a corner of the
+/// cube, far from the polygon's mass point); a crease line that misses the
+/// cube is no feature of this cube.  A point within rounding of the cube is
+/// clamped into it.
+/// `accept(x)` may refuse a candidate point (a fan that would fold): the
+/// next lower rank is then tried.
+template <typename Accept>
+Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, std::size_t n, const Vector_3d& low,
+                            const Vector_3d& high, const Feature_settings& settings, const Accept& accept,
+                            Vector_3d& result)
+{
+  if(!settings.enabled || n < 3 || !has_feature(normals, n, settings))
+    return Feature_kind::NONE;
+  const int rank = feature_quadric_rank(normals, n, settings);
+  const double tolerance = 1e-9 * (high[0] - low[0]);
+  for(int r = rank; r >= 2; --r)
+  {
+    Vector_3d x, d;
+    if(!solve_feature_quadric(points, normals, n, r, settings, x, d))
+      continue;
+    bool inside = true;
+    for(int a = 0; a < 3; ++a)
+      inside = inside && x[a] >= low[a] - tolerance && x[a] <= high[a] + tolerance;
+    if(!inside && r == 2)
+    {
+      double t0, t1;
+      clip_line_to_box(x, d, low, high, t0, t1);
+      if(!(t0 <= t1))
+        continue;
+      const double t = t0 > 0 ? t0 : t1;
+      for(int a = 0; a < 3; ++a)
+        x[a] += t * d[a];
+      inside = true;
+    }
+    if(!inside)
+      continue;
+    for(int a = 0; a < 3; ++a)
+      x[a] = (std::min)((std::max)(x[a], low[a]), high[a]);
+    if(!accept(x))
+      continue;
+    result = x;
+    return r == 3 ? Feature_kind::CORNER : Feature_kind::CREASE;
+  }
+  return Feature_kind::NONE;
+}
+
+/// The shape quality |cross|^2 / (sum of squared sides)^2 of a triangle: 0
+/// for a degenerate one, 1/12 for an equilateral one (about 2e-3 at a
+/// smallest angle of 5 degrees).
+inline double triangle_quality(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c)
+{
+  const Vector_3d n = triangle_normal(a, b, c);
+  const Vector_3d u = sub3(b, a), v = sub3(c, b), w = sub3(a, c);
+  const double sides = dot3(u, u) + dot3(v, v) + dot3(w, w);
+  return sides > 0 ? dot3(n, n) / (sides * sides) : 0;
+}
+
+/// Below this quality a triangle counts as degenerate (smallest angle about
+/// 0.01 degree): fans and collapses that would create one are refused.
+constexpr double degenerate_quality = 1e-9;
+
+/// Whether the fan of the polygon `points[0..n)` (directed, outward) around
+/// `apex` keeps the orientation the crossing normals give: every fan
+/// triangle's normal must make an acute angle with the normals of its two
+/// polygon vertices, and no fan triangle may be degenerate.  Otherwise the
+/// apex would fold the surface, and the cube keeps its plain triangulation.
+inline bool fan_is_unfolded(const Vector_3d* points, const Vector_3d* normals, std::size_t n, const Vector_3d& apex)
+{
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t j = (i + 1) % n;
+    const Vector_3d t = triangle_normal(points[i], points[j], apex);
+    if(!(dot3(t, normals[i]) > 0 && dot3(t, normals[j]) > 0))
+      return false;
+    if(!(triangle_quality(points[i], points[j], apex) > degenerate_quality))
+      return false;
+  }
+  return true;
+}
+
+} // namespace Marching_cubes_csg
+} // namespace internal
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_MARCHING_CUBES_CSG_FEATURE_VERTEX_H
