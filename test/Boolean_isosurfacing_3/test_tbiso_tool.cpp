@@ -637,7 +637,7 @@ TEST_F(TbisoTool, ErrorsGiveOneLineAndExitCodeOne)
       {"--grid 9" + sphere + " --threads 0", "threads"},
       {"--grid 9" + sphere + " --smooth 2 --lambda 0.5 --mu 0.5", "mu"},
       {"--grid 9" + sphere + " --lambda 0.5", "--smooth"},
-      {"--grid 9" + sphere + " -o " + file("no/such/dir/out.ply"), "cannot open"},
+      {"--grid 9" + sphere + " -o " + file("no/such/dir/out.ply"), "cannot write"},
       {"--demo " + file("d") + " --grid 9", "--demo"},
   };
   for(const auto& [arguments, expected] : cases)
