@@ -22,6 +22,7 @@
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_to_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/crease_preserving_smoothing.h>
 #include "tool_support.h"
+#include "tbiso_fields.h"
 #include <CGAL/Boolean_isosurfacing_3/extract_crease_network.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -68,7 +69,12 @@ typedef BI::Tetrahedral_grid_3<K> Grid;
 typedef BI::Tetrahedral_mesh_3<K> Tet_mesh;
 typedef BI::Boolean_isosurface_soup<Point> Soup;
 typedef CGAL::Surface_mesh<Point> Surface_mesh;
-typedef std::function<double(const Point&)> Field;
+typedef tbiso_fields::Field Field;
+using tbiso_fields::Error;
+using tbiso_fields::make_field;
+using tbiso_fields::parse_double;
+using tbiso_fields::parse_numbers;
+using tbiso_fields::split;
 
 const char* usage_text =
     "usage: tbiso (--grid N | --grid NX,NY,NZ [--box XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX] | --mesh FILE)\n"
@@ -114,20 +120,14 @@ const char* usage_text =
     "  --threads N           use at most N threads\n"
     "  --slab-size LAYERS    cube layers per slab along z, the unit of parallel work on a grid\n"
     "                        (default: about 1/64 of the grid in core, 8 out of core)\n"
-    "  --out-of-core         grid + raw --fields file + -o OUT.ply: read the fields one slab at\n"
-    "                        a time and stream the surface to the file; memory is a few slabs\n"
+    "  --out-of-core         grid + raw --fields file (or --field SPECs) + -o OUT.ply: read (or\n"
+    "                        evaluate) the fields one slab at a time and stream the surface to\n"
+    "                        the file; memory is a few slabs\n"
     "                        (no --creases, --corners or --smooth: they need the whole surface)\n"
     "  --demo DIR            four spheres on a 128^3 grid, 'at least two of four';\n"
     "                        writes DIR/tbiso_demo.ply, DIR/tbiso_demo_creases.polylines.txt,\n"
     "                        DIR/tbiso_demo_corners.xyz\n"
     "  -h, --help            this text\n";
-
-// Every error the user can cause: reported on one line, exit status 1.
-class Error : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
 
 struct Options
 {
@@ -154,42 +154,11 @@ double seconds_since(std::chrono::steady_clock::time_point t)
 
 // ---- argument parsing ------------------------------------------------------
 
-double parse_double(const std::string& text, const std::string& what)
-{
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if(text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-    throw Error(what + ": '" + text + "' is not a finite number");
-  return v;
-}
-
 std::size_t parse_count(const std::string& text, const std::string& what)
 {
   if(text.empty() || text.size() > 12 || !std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit((unsigned char)c); }))
     throw Error(what + ": '" + text + "' is not a whole number");
   return std::size_t(std::stoull(text));
-}
-
-std::vector<std::string> split(const std::string& text, char separator)
-{
-  std::vector<std::string> parts(1);
-  for(char c : text)
-    if(c == separator)
-      parts.emplace_back();
-    else
-      parts.back() += c;
-  return parts;
-}
-
-std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& what)
-{
-  const std::vector<std::string> parts = split(text, ',');
-  if(parts.size() != count)
-    throw Error(what + ": expected " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
-  std::vector<double> values;
-  for(const std::string& p : parts)
-    values.push_back(parse_double(p, what));
-  return values;
 }
 
 bool has_extension(const std::string& file, const std::string& extension)
@@ -301,137 +270,6 @@ bool parse_arguments(int argc, char** argv, Options& o)
   if((o.lambda || o.mu) && !o.smooth_iterations)
     throw Error("--lambda and --mu need --smooth");
   return true;
-}
-
-// ---- analytic fields ---------------------------------------------------------
-
-// Signed distance to a closed triangle mesh: an AABB tree for the distance,
-// ray parity (exact predicates) for the sign, so that points on the surface
-// get exactly 0.  The tree is built before any query, so concurrent queries
-// are safe.
-class Signed_distance_to_mesh
-{
-  typedef CGAL::Side_of_triangle_mesh<Surface_mesh, K> Side;
-  typedef Side::AABB_tree Tree;
-
-public:
-  explicit Signed_distance_to_mesh(const std::string& path)
-  {
-    try
-    {
-      BI::IO::read_closed_triangle_mesh(path, m_mesh);
-    }
-    catch(const BI::Invalid_input_error& e)
-    {
-      throw Error("--field distance:" + path + ": " + e.what());
-    }
-    m_tree = std::make_unique<Tree>(faces(m_mesh).first, faces(m_mesh).second, m_mesh);
-    m_tree->build();
-    m_tree->accelerate_distance_queries();
-    m_side = std::make_unique<Side>(*m_tree);
-  }
-
-  double operator()(const Point& p) const
-  {
-    const CGAL::Bounded_side side = (*m_side)(p);
-    if(side == CGAL::ON_BOUNDARY)
-      return 0;
-    const double d = std::sqrt(CGAL::to_double(m_tree->squared_distance(p)));
-    return side == CGAL::ON_BOUNDED_SIDE ? -d : d;
-  }
-
-  std::size_t number_of_faces() const { return m_mesh.number_of_faces(); }
-
-private:
-  Surface_mesh m_mesh;
-  std::unique_ptr<Tree> m_tree;
-  std::unique_ptr<Side> m_side;
-};
-
-Field make_field(const std::string& spec)
-{
-  const std::size_t colon = spec.find(':');
-  if(colon == std::string::npos)
-    throw Error("--field '" + spec + "': expected KIND:PARAMETERS (see tbiso --help)");
-  const std::string kind = spec.substr(0, colon), rest = spec.substr(colon + 1);
-  const std::string what = "--field " + spec;
-  if(kind == "sphere")
-  {
-    const std::vector<double> v = parse_numbers(rest, 4, what);
-    if(!(v[3] > 0))
-      throw Error(what + ": the radius must be positive");
-    const double cx = v[0], cy = v[1], cz = v[2], r = v[3];
-    return [=](const Point& p) {
-      const double x = p.x() - cx, y = p.y() - cy, z = p.z() - cz;
-      return std::sqrt(x * x + y * y + z * z) - r;
-    };
-  }
-  if(kind == "plane")
-  {
-    const std::vector<double> v = parse_numbers(rest, 4, what);
-    if(v[0] == 0 && v[1] == 0 && v[2] == 0)
-      throw Error(what + ": the normal (A,B,C) is zero");
-    const double a = v[0], b = v[1], c = v[2], d = v[3];
-    return [=](const Point& p) { return a * p.x() + b * p.y() + c * p.z() + d; };
-  }
-  if(kind == "box")
-  {
-    const std::vector<double> v = parse_numbers(rest, 6, what);
-    for(int a = 0; a < 3; ++a)
-      if(!(v[a] < v[a + 3]))
-        throw Error(what + ": the minimum must be below the maximum on every axis");
-    const std::array<double, 3> lo{v[0], v[1], v[2]}, hi{v[3], v[4], v[5]};
-    // Exact distance: Euclidean outside, to the nearest face inside.  Each
-    // coordinate offset is a difference with a box bound, so a point on a
-    // face plane gets exactly 0 there.
-    return [=](const Point& p) {
-      const double x[3] = {p.x(), p.y(), p.z()};
-      double outside = 0, inside = -std::numeric_limits<double>::infinity();
-      for(int a = 0; a < 3; ++a)
-      {
-        const double q = std::max(lo[a] - x[a], x[a] - hi[a]);
-        inside = std::max(inside, q);
-        if(q > 0)
-          outside += q * q;
-      }
-      return outside > 0 ? std::sqrt(outside) : inside;
-    };
-  }
-  if(kind == "cylinder")
-  {
-    const std::vector<std::string> parts = split(rest, ',');
-    if(parts.size() != 4 || parts[0].size() != 1 || std::string("xyz").find(parts[0][0]) == std::string::npos)
-      throw Error(what + ": expected cylinder:AXIS,C1,C2,R with AXIS x, y or z");
-    const int axis = int(parts[0][0] - 'x');
-    const double c1 = parse_double(parts[1], what), c2 = parse_double(parts[2], what), r = parse_double(parts[3], what);
-    if(!(r > 0))
-      throw Error(what + ": the radius must be positive");
-    return [=](const Point& p) {
-      const double x[3] = {p.x(), p.y(), p.z()};
-      // The other two axes in increasing order: x -> (y, z), y -> (x, z), z -> (x, y).
-      const double u = x[axis == 0 ? 1 : 0] - c1, w = x[axis == 2 ? 1 : 2] - c2;
-      return std::sqrt(u * u + w * w) - r;
-    };
-  }
-  if(kind == "torus")
-  {
-    const std::vector<double> v = parse_numbers(rest, 2, what);
-    if(!(v[1] > 0) || !(v[0] >= 0))
-      throw Error(what + ": expected R >= 0 and r > 0");
-    const double R = v[0], r = v[1];
-    return [=](const Point& p) {
-      const double q = std::sqrt(p.x() * p.x() + p.y() * p.y()) - R;
-      return std::sqrt(q * q + p.z() * p.z()) - r;
-    };
-  }
-  if(kind == "distance")
-  {
-    if(rest.empty())
-      throw Error(what + ": expected distance:MESHFILE");
-    const std::shared_ptr<const Signed_distance_to_mesh> distance = std::make_shared<Signed_distance_to_mesh>(rest);
-    return [distance](const Point& p) { return (*distance)(p); };
-  }
-  throw Error("--field '" + spec + "': unknown kind '" + kind + "' (sphere, plane, box, cylinder, torus, distance)");
 }
 
 // ---- the run ---------------------------------------------------------------
@@ -862,39 +700,75 @@ int run_out_of_core(const Options& o)
   const auto total_start = std::chrono::steady_clock::now();
   if(!o.grid || !o.mesh_file.empty())
     throw Error("--out-of-core needs --grid");
+  const bool analytic = !o.field_specs.empty();
   const bool f32 = has_extension(o.fields_file, ".f32");
-  if(o.fields_file.empty() || !(f32 || has_extension(o.fields_file, ".f64") || has_extension(o.fields_file, ".raw")))
-    throw Error("--out-of-core needs a raw --fields file (.f32, .f64 or .raw)");
-  if(o.field_count == 0)
+  if(analytic && !o.fields_file.empty())
+    throw Error("give either --fields FILE or --field SPEC, not both");
+  if(!analytic &&
+     (o.fields_file.empty() || !(f32 || has_extension(o.fields_file, ".f64") || has_extension(o.fields_file, ".raw"))))
+    throw Error("--out-of-core needs a raw --fields file (.f32, .f64 or .raw) or --field SPEC");
+  if(!analytic && o.field_count == 0)
     throw Error("--out-of-core: give the number of fields with --field-count N");
+  if(analytic && o.field_count != 0)
+    throw Error("--field-count is for --fields FILE");
+  if(o.field_specs.size() > 64)
+    throw Error("at most 64 fields are supported");
   if(!has_extension(o.output, ".ply"))
     throw Error("--out-of-core writes the surface as it goes: give -o OUT.ply");
   if(!o.creases_file.empty() || !o.corners_file.empty() || o.smooth_iterations)
     throw Error("--out-of-core: --creases, --corners and --smooth need the whole surface in memory");
+  const std::size_t field_count = analytic ? o.field_specs.size() : o.field_count;
   BI::Boolean_expression expression = BI::Boolean_expression::parse(o.expression ? *o.expression : "f0");
-  if(expression.number_of_variables() > o.field_count)
+  if(expression.number_of_variables() > field_count)
     throw Error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
-                " but there are only " + std::to_string(o.field_count) + " fields");
-  check_grid_memory(o, o.field_count);
+                " but there are only " + std::to_string(field_count) + " fields");
   const std::array<double, 6> b = o.box ? *o.box : std::array<double, 6>{-1, -1, -1, 1, 1, 1};
   const Grid grid = Grid::spanning(Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5]), *o.grid);
   Input in;
   in.grid.emplace(grid);
   print_domain(in, o, 0);
-  BI::IO::Raw_scalar_field_reader reader(o.fields_file, grid.number_of_vertices(), o.field_count,
-                                         f32 ? BI::IO::Raw_scalar_type::FLOAT32 : BI::IO::Raw_scalar_type::FLOAT64);
-  std::printf("fields:     %zu, read slab by slab from %s\n", o.field_count, o.fields_file.c_str());
-  std::printf("expression: %s (%zu term%s)%s\n", expression.to_string().c_str(), expression.number_of_terms(),
-              expression.number_of_terms() == 1 ? "" : "s", o.close ? ", closed at the domain boundary" : "");
-  std::fflush(stdout);
-  BI::IO::Boolean_isosurface_PLY_stream ply(o.output);
-  const auto np = BI::parameters::close_at_domain_boundary(
-      o.close, BI::parameters::progress(Progress_bar(), BI::parameters::slab_layers(o.slab_layers ? o.slab_layers : 8)));
+  // The fields: a raw file read slab by slab, or the functions evaluated slab
+  // by slab (the same doubles as the in-core sampling).
+  auto extract_to = [&](auto& source) {
+    BI::IO::Boolean_isosurface_PLY_stream ply(o.output);
+    const auto np = BI::parameters::close_at_domain_boundary(
+        o.close,
+        BI::parameters::progress(Progress_bar(), BI::parameters::slab_layers(o.slab_layers ? o.slab_layers : 8)));
+    const BI::Boolean_isosurface_slab_statistics s =
+        o.parallel
+            ? BI::extract_boolean_isosurface_by_slabs<CGAL::Parallel_if_available_tag>(grid, source, expression, ply, np)
+            : BI::extract_boolean_isosurface_by_slabs<CGAL::Sequential_tag>(grid, source, expression, ply, np);
+    ply.close();
+    return s;
+  };
+  auto print_expression = [&] {
+    std::printf("expression: %s (%zu term%s)%s\n", expression.to_string().c_str(), expression.number_of_terms(),
+                expression.number_of_terms() == 1 ? "" : "s", o.close ? ", closed at the domain boundary" : "");
+    std::fflush(stdout);
+  };
+  check_grid_memory(o, field_count);
   const auto start = std::chrono::steady_clock::now();
-  const BI::Boolean_isosurface_slab_statistics s =
-      o.parallel ? BI::extract_boolean_isosurface_by_slabs<CGAL::Parallel_if_available_tag>(grid, reader, expression, ply, np)
-                 : BI::extract_boolean_isosurface_by_slabs<CGAL::Sequential_tag>(grid, reader, expression, ply, np);
-  ply.close();
+  BI::Boolean_isosurface_slab_statistics s;
+  if(analytic)
+  {
+    std::vector<Field> functions;
+    for(const std::string& spec : o.field_specs)
+      functions.push_back(make_field(spec));
+    tbiso_fields::Analytic_field_source source(grid, std::move(functions));
+    std::printf("fields:     %zu, evaluated slab by slab\n", field_count);
+    for(std::size_t i = 0; i < o.field_specs.size(); ++i)
+      std::printf("  f%zu = %s\n", i, o.field_specs[i].c_str());
+    print_expression();
+    s = extract_to(source);
+  }
+  else
+  {
+    BI::IO::Raw_scalar_field_reader reader(o.fields_file, grid.number_of_vertices(), o.field_count,
+                                           f32 ? BI::IO::Raw_scalar_type::FLOAT32 : BI::IO::Raw_scalar_type::FLOAT64);
+    std::printf("fields:     %zu, read slab by slab from %s\n", o.field_count, o.fields_file.c_str());
+    print_expression();
+    s = extract_to(reader);
+  }
   std::printf("time extraction: %.3f s (%zu slabs of %zu layers; reading %.3f s, evaluation and reading %.3f s, "
               "welding and writing %.3f s; %zu of %zu tetrahedra evaluated%s)\n",
               seconds_since(start), s.number_of_slabs, o.slab_layers ? o.slab_layers : std::size_t(8), s.reading_seconds,

@@ -362,13 +362,39 @@ TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
     }
     EXPECT_TRUE(a == b) << "slab size " << slab;
   }
+  // Analytic fields out of core: evaluated slab by slab, the in-core surface.
+  {
+    const Result r = run("--grid 21" + demo_fields() + expression + " --out-of-core -o " + file("ooc_analytic.ply"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("evaluated slab by slab"), std::string::npos) << r.out;
+    const Soup streamed = read_ply(file("ooc_analytic.ply"));
+    const Soup in_core_soup = read_ply(file("in_core.ply"));
+    ASSERT_GT(in_core_soup.polygons.size(), 100u);
+    auto shapes = [](const Soup& soup) {
+      std::multiset<std::vector<Point>> set;
+      for(const auto& poly : soup.polygons)
+      {
+        std::vector<Point> q;
+        for(std::size_t v : poly)
+          q.push_back(soup.points[v]);
+        std::rotate(q.begin(), std::min_element(q.begin(), q.end()), q.end());
+        set.insert(q);
+      }
+      return set;
+    };
+    EXPECT_EQ(streamed.points.size(), in_core_soup.points.size());
+    EXPECT_TRUE(shapes(streamed) == shapes(in_core_soup));
+  }
   // Its own errors.
   const std::pair<std::string, const char*> errors[] = {
       {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o x.off", "OUT.ply"},
       {"--grid 21 --fields " + file("f.f64") + expression + " --out-of-core -o x.ply", "--field-count"},
       {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o " +
            file("x.ply") + " --creases c.txt", "whole surface"},
-      {"--grid 21" + demo_fields() + " --out-of-core -o " + file("x.ply"), "raw --fields"},
+      {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + demo_fields() + expression + " --out-of-core -o " +
+           file("x.ply"), "not both"},
+      {"--grid 21" + demo_fields() + " --field-count 4" + expression + " --out-of-core -o " + file("x.ply"),
+       "--field-count is for"},
       {"--grid 21 --fields " + file("f.f64") + " --field-count 4 --slab-size 0" + expression, "at least 1"}};
   for(const auto& e : errors)
   {

@@ -34,6 +34,7 @@
 // range above gets anyway: the duplicates the range below dropped cancel.
 
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_chunk.h>
 
 #include <algorithm>
 #include <array>
@@ -53,23 +54,32 @@ namespace Boolean_isosurfacing {
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// The contiguous cube-layer range `[first, last)` of `number_of_layers`
-/// layers given to part `part` of `number_of_parts`: the ranges are in part
-/// order, cover all layers, and differ in size by at most one layer.  Every
-/// non-empty range has at least two layers (see
-/// `weld_boolean_isosurface_slab_range()`): when there are fewer than
-/// `2 * number_of_parts` layers, the last parts get empty ranges
-/// `[number_of_layers, number_of_layers)`.
-/// \pre `part < number_of_parts`
+/// layers given to part `part` of `number_of_parts`, made of whole slabs of
+/// `slab_layers` layers (the grid's slabs `[s * slab_layers, (s + 1) *
+/// slab_layers)`, the last one possibly shorter): the ranges are in part
+/// order, cover all layers, and differ in size by at most one slab.  Whole
+/// slabs make a range weld the same chunks as the single-process
+/// `extract_boolean_isosurface_by_slabs()` with the same `slab_layers`, so
+/// that the removal of what rounding leaves degenerate is the same too.
+/// Every non-empty range but the last has at least two layers (see
+/// `match_boolean_isosurface_slab_range()`): when there are too few slabs,
+/// the last parts get empty ranges `[number_of_layers, number_of_layers)`.
+/// \pre `part < number_of_parts` and `slab_layers >= 1`
 inline std::pair<std::size_t, std::size_t> slab_range_of_part(std::size_t number_of_layers, std::size_t part,
-                                                              std::size_t number_of_parts)
+                                                              std::size_t number_of_parts,
+                                                              std::size_t slab_layers = 1)
 {
-  CGAL_precondition(part < number_of_parts);
-  const std::size_t active = (std::max<std::size_t>)(1, (std::min)(number_of_parts, number_of_layers / 2));
+  CGAL_precondition(part < number_of_parts && slab_layers >= 1);
+  const std::size_t slabs = (number_of_layers + slab_layers - 1) / slab_layers;
+  // Slabs of one layer: two per range, so that a range has two layers.
+  const std::size_t per_range = slab_layers == 1 ? 2 : 1;
+  const std::size_t active = (std::max<std::size_t>)(1, (std::min)(number_of_parts, slabs / per_range));
   if(part >= active)
     return {number_of_layers, number_of_layers};
-  const std::size_t base = number_of_layers / active, extra = number_of_layers % active;
+  const std::size_t base = slabs / active, extra = slabs % active;
   const std::size_t first = part * base + (std::min)(part, extra);
-  return {first, first + base + (part < extra ? 1 : 0)};
+  const std::size_t last = first + base + (part < extra ? 1 : 0);
+  return {(std::min)(number_of_layers, first * slab_layers), (std::min)(number_of_layers, last * slab_layers)};
 }
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
@@ -119,12 +129,21 @@ struct Boolean_isosurface_slab_range
   std::vector<int> labels;
   /// The vertices whose carrier lies in vertex layer `first_layer` (empty
   /// when `first_layer == 0`), and those in vertex layer `last_layer` (empty
-  /// for the last range): local indices, increasing, and their keys
-  /// (`key_words` words each, same order).
+  /// for the last range): local indices, non-decreasing, and their keys
+  /// (`key_words` words each, same order).  A vertex appears once per key:
+  /// the welding merges the keys of bit-identical vertices of a polygon.
   std::vector<std::size_t> bottom_vertices, top_vertices;
   std::vector<std::uint64_t> bottom_keys, top_keys;
   std::size_t number_of_evaluated_tetrahedra = 0;
   std::size_t peak_field_values = 0;
+  /// True if the range was extracted without the message from the range
+  /// below and its first slab has two bottom-layer vertices at one position:
+  /// whether the welding merges them depends on how the range below numbered
+  /// them, so the range must be extracted again with that message (see
+  /// `match_boolean_isosurface_slab_range()`).
+  bool depends_on_below = false;
+  /// The message from below the range was extracted with (empty if none).
+  std::vector<std::uint64_t> message_used;
 
   std::size_t number_of_polygons() const { return labels.size(); }
 };
@@ -137,8 +156,10 @@ struct Boolean_isosurface_slab_range
 /// number of keys m, m local indices, m * key_words key words]`.
 inline std::vector<std::uint64_t> top_layer_message(const Boolean_isosurface_slab_range& range)
 {
-  const bool top_follows_bottom = range.bottom_vertices.empty() || range.top_vertices.empty() ||
-                                  range.top_vertices.front() > range.bottom_vertices.back();
+  const bool top_follows_bottom =
+      range.bottom_vertices.empty() || range.top_vertices.empty() ||
+      *std::min_element(range.top_vertices.begin(), range.top_vertices.end()) >
+          *std::max_element(range.bottom_vertices.begin(), range.bottom_vertices.end());
   std::vector<std::uint64_t> message{std::uint64_t(range.points.size()), std::uint64_t(top_follows_bottom),
                                      std::uint64_t(range.top_vertices.size())};
   message.insert(message.end(), range.top_vertices.begin(), range.top_vertices.end());
@@ -169,7 +190,8 @@ struct Boolean_isosurface_slab_range_welding
 /// \throws Invalid_input_error if the message is malformed, or if the range
 /// below has top-layer vertices before bottom-layer ones in its local order
 /// (a one-layer range in the middle: give every range two layers or more,
-/// as `slab_range_of_part()` does).
+/// as `slab_range_of_part()` does), or if `range.depends_on_below` (extract
+/// it again with this message), or if it was extracted with another message.
 inline Boolean_isosurface_slab_range_welding
 match_boolean_isosurface_slab_range(const Boolean_isosurface_slab_range& range,
                                     const std::vector<std::uint64_t>& message_from_below)
@@ -183,8 +205,16 @@ match_boolean_isosurface_slab_range(const Boolean_isosurface_slab_range& range,
     k.zero_fields = w[4];
     return k;
   };
+  if(range.depends_on_below)
+    throw Invalid_input_error("the range [" + std::to_string(range.first_layer) + ", " +
+                              std::to_string(range.last_layer) +
+                              ") has bottom-layer vertices at one position: extract it again with the message "
+                              "from the range below");
+  if(!range.message_used.empty() && range.message_used != message_from_below)
+    throw Invalid_input_error("the range was extracted with another message from the range below");
   Boolean_isosurface_slab_range_welding welding;
   welding.below_match.assign(range.bottom_vertices.size(), welding.no_match);
+  std::vector<std::size_t> is_matched;
   std::size_t matched = 0;
   if(!message_from_below.empty())
   {
@@ -205,7 +235,15 @@ match_boolean_isosurface_slab_range(const Boolean_isosurface_slab_range& range,
       if(found != below.end())
       {
         welding.below_match[b] = found->second;
-        ++matched;
+        // A vertex listed with several keys is one vertex, matched once.
+        if(is_matched.empty())
+          is_matched.assign(range.points.size(), welding.no_match);
+        std::size_t& match = is_matched[range.bottom_vertices[b]];
+        if(match == welding.no_match)
+          ++matched;
+        else if(match != found->second)
+          throw Invalid_input_error("a bottom-layer vertex matches two vertices of the range below");
+        match = found->second;
       }
     }
   }
@@ -257,6 +295,204 @@ inline void append_key(std::vector<std::uint64_t>& out, const Tbiso_vertex_key& 
 
 } // namespace internal
 
+namespace internal {
+
+inline Tbiso_vertex_key key_from_words(const std::uint64_t* w)
+{
+  Tbiso_vertex_key k;
+  for(int c = 0; c < 4; ++c)
+    k.corners[c] = std::size_t(w[c]);
+  k.zero_fields = w[4];
+  return k;
+}
+
+// The common body of both overloads of extract_boolean_isosurface_slab_range():
+// `message` is the top-layer message of the range below, or null.
+//
+// The range welds its chunks -- the grid's slabs of `slab_layers` layers, cut
+// to the range -- with internal::weld_chunk() in order, as
+// extract_boolean_isosurface_by_slabs() does, so that it removes the same
+// degenerate polygons (see weld_chunk()).  Only the first chunk differs: the
+// single process looks its bottom-layer keys up in the slab below, which
+// here is another range.  Without the message, every bottom-layer vertex is
+// a local vertex (the match later finds the ones the range below has).  That
+// is what the single process does unless one of its merge classes holds two
+// bottom-layer keys (two bottom-layer vertices at one position): whether they
+// are merged then depends on the indices the range below gave them, and the
+// range is marked `depends_on_below`.  With the message, a bottom-layer key
+// the range below has looks up "tag | its local index below", so weld_chunk()
+// takes exactly the single-process decisions; such a vertex still gets a
+// local point, at its place in the local order, and is listed with its keys.
+template <typename ConcurrencyTag, typename GeomTraits, typename FieldSource, typename NamedParameters>
+void extract_slab_range(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource& source,
+                        const Boolean_expression& expression, std::size_t first_layer, std::size_t last_layer,
+                        const std::vector<std::uint64_t>* message, Boolean_isosurface_slab_range& range,
+                        const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef Tbiso_vertex_key Key;
+
+  const std::array<std::size_t, 3>& n = grid.vertex_counts();
+  const std::size_t layers = n[2] - 1, layer_size = n[0] * n[1];
+  if(!(first_layer <= last_layer && last_layer <= layers))
+    throw Invalid_input_error("the cube layers [" + std::to_string(first_layer) + ", " + std::to_string(last_layer) +
+                              ") are not within the grid's " + std::to_string(layers) + " layers");
+  const std::size_t N = source.number_of_fields();
+  if(expression.number_of_variables() > N)
+    throw Invalid_input_error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
+                              " but there are only " + std::to_string(N) + " fields");
+  const bool close = choose_parameter(get_parameter(np, internal_np::close_at_domain_boundary), false);
+  const std::size_t slab =
+      std::max<std::size_t>(1, choose_parameter(get_parameter(np, internal_np::slab_layers), std::size_t(8)));
+
+  const std::size_t W = Boolean_isosurface_slab_range::key_words;
+  const std::size_t tag = std::size_t(1) << (std::numeric_limits<std::size_t>::digits - 1);
+  const std::size_t no_index = tbiso_no_index();
+  std::unordered_map<Key, std::size_t, Tbiso_vertex_key_hash> from_below;
+  if(message != nullptr && !message->empty())
+  {
+    const std::vector<std::uint64_t>& m = *message;
+    if(m.size() < 3 || m.size() != 3 + m[2] * (1 + W))
+      throw Invalid_input_error("malformed top-layer message from the range below");
+    const std::size_t count = std::size_t(m[2]);
+    from_below.reserve(count);
+    for(std::size_t t = 0; t < count; ++t)
+      from_below.emplace(key_from_words(m.data() + 3 + count + W * t), tag | std::size_t(m[3 + t]));
+  }
+
+  range = Boolean_isosurface_slab_range();
+  range.first_layer = first_layer;
+  range.last_layer = last_layer;
+  range.number_of_layers = layers;
+  if(message != nullptr)
+    range.message_used = *message;
+  const Tbiso_tetrahedron_evaluator prototype(expression, close);
+  // The chunks: the grid's slabs [s * slab, (s + 1) * slab) cut to the range.
+  std::vector<std::size_t> bounds{first_layer};
+  while(bounds.back() < last_layer)
+    bounds.push_back((std::min)(last_layer, (bounds.back() / slab + 1) * slab));
+  const std::size_t number_of_slabs = bounds.size() - 1;
+  const std::size_t window =
+      is_parallel_tag<ConcurrencyTag>() ? 2 * std::max<std::size_t>(1, std::thread::hardware_concurrency()) : 1;
+
+  struct Slot
+  {
+    std::size_t k_begin = 0, k_end = 0;
+    std::vector<double> values;
+    Tbiso_chunk chunk;
+  };
+  std::vector<Slot> slots((std::min)(window, (std::max<std::size_t>)(1, number_of_slabs)));
+  // Each slot keeps its buffer: sized once for the largest slab (plus two
+  // ghost layers and rounding), it is never reallocated.
+  for(Slot& slot : slots)
+    slot.values.reserve(((std::min)(slab, last_layer - first_layer) + 3) * layer_size * N);
+  std::unordered_map<Key, std::size_t, Tbiso_vertex_key_hash> below, above;
+  std::unordered_map<std::size_t, std::size_t> tag_to_local;
+  std::size_t next_index = 0; // == range.points.size()
+  std::vector<std::array<double, 3>> bottom_points;
+
+  for(std::size_t s0 = 0; s0 < number_of_slabs; s0 += slots.size())
+  {
+    const std::size_t count = (std::min)(slots.size(), number_of_slabs - s0);
+    // Read in order (one file), then evaluate the window (in parallel).
+    for(std::size_t w = 0; w < count; ++w)
+    {
+      Slot& slot = slots[w];
+      slot.k_begin = bounds[s0 + w];
+      slot.k_end = bounds[s0 + w + 1];
+      const std::size_t lo = slot.k_begin > 0 ? slot.k_begin - 1 : 0, hi = (std::min)(n[2] - 1, slot.k_end + 1);
+      source.read(lo * layer_size, (hi - lo + 1) * layer_size, slot.values);
+    }
+    std::size_t held = 0;
+    for(const Slot& slot : slots)
+      held += slot.values.capacity();
+    range.peak_field_values = (std::max)(range.peak_field_values, held);
+    concurrent_for<ConcurrencyTag>(count, [&](std::size_t w) {
+      Slot& slot = slots[w];
+      const std::size_t lo = slot.k_begin > 0 ? slot.k_begin - 1 : 0;
+      for(std::size_t k = 0; k < slot.values.size(); ++k)
+        if(!std::isfinite(slot.values[k]))
+          throw Non_finite_value_error("field " + std::to_string(k % N) + " has a non-finite value at vertex " +
+                                       std::to_string(lo * layer_size + k / N));
+      slot.chunk = Tbiso_chunk();
+      extract_grid_slab(grid, slot.values.data(), lo * layer_size, N, prototype, slot.k_begin, slot.k_end,
+                        slot.chunk);
+    });
+    // Weld in slab order, as the single process does.
+    for(std::size_t w = 0; w < count; ++w)
+    {
+      Tbiso_chunk& chunk = slots[w].chunk;
+      const std::size_t k_begin = slots[w].k_begin, k_end = slots[w].k_end;
+      const bool at_bottom = k_begin == first_layer && first_layer > 0;
+      range.number_of_evaluated_tetrahedra += chunk.evaluated;
+      if(at_bottom && message == nullptr)
+      {
+        bottom_points.clear();
+        for(std::size_t v = 0; v < chunk.keys.size(); ++v)
+          if(carrier_layer(chunk.keys[v], layer_size) == first_layer)
+            bottom_points.push_back(chunk.points[v]);
+        std::sort(bottom_points.begin(), bottom_points.end());
+        range.depends_on_below =
+            std::adjacent_find(bottom_points.begin(), bottom_points.end()) != bottom_points.end();
+        std::vector<std::array<double, 3>>().swap(bottom_points);
+      }
+      if(!at_bottom || from_below.empty())
+        chunk.index.clear(); // kept only to find the points of tagged keys
+      above.clear();
+      weld_chunk(
+          chunk,
+          [&](const Key& key) {
+            if(carrier_layer(key, layer_size) != k_begin)
+              return no_index;
+            const auto& map = k_begin == first_layer ? from_below : below;
+            const auto found = map.find(key);
+            return found == map.end() ? no_index : found->second;
+          },
+          [&](const Key& key, std::size_t index) {
+            if(index != no_index && (index & tag) != 0)
+            {
+              const auto inserted = tag_to_local.emplace(index, range.points.size());
+              if(inserted.second)
+              {
+                range.points.push_back(chunk.points[chunk.index.at(key)]);
+                ++next_index;
+              }
+              index = inserted.first->second;
+            }
+            const std::size_t z = carrier_layer(key, layer_size);
+            if(z == first_layer && at_bottom)
+            {
+              range.bottom_vertices.push_back(index);
+              append_key(range.bottom_keys, key);
+            }
+            if(z == k_end)
+            {
+              if(k_end != last_layer)
+                above.emplace(key, index);
+              else if(last_layer < layers)
+              {
+                range.top_vertices.push_back(index);
+                append_key(range.top_keys, key);
+              }
+            }
+          },
+          next_index, [&](const std::array<double, 3>& p) { range.points.push_back(p); },
+          [&](const std::size_t* v, std::size_t size, int label, int) {
+            for(std::size_t k = 0; k < size; ++k)
+              range.polygon_vertices.push_back((v[k] & tag) != 0 ? tag_to_local.at(v[k]) : v[k]);
+            range.polygon_begin.push_back(range.polygon_vertices.size());
+            range.labels.push_back(label);
+          });
+      below.swap(above);
+      tag_to_local.clear();
+      chunk = Tbiso_chunk();
+    }
+  }
+}
+
+} // namespace internal
+
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// TBISO on cube layers `[first_layer, last_layer)` of `grid`, reading from
 /// `source` only the vertex layers `first_layer - 1 .. last_layer + 1`
@@ -264,6 +500,15 @@ inline void append_key(std::vector<std::uint64_t>& out, const Tbiso_vertex_key& 
 /// neighbouring tetrahedron may lie), `slab_layers` cube layers at a time.
 /// The result is `range`, with local vertex numbers; the polygons are those
 /// of the sequential extraction for these layers, in the same order.
+///
+/// The range welds the grid's slabs (`slab_layers` layers each) in order,
+/// removing what rounding to double leaves degenerate as
+/// `extract_boolean_isosurface_by_slabs()` does.  When the range is made of
+/// whole slabs (`slab_range_of_part()` with the same `slab_layers`), the
+/// assembled ranges are that function's output exactly, degenerate inputs
+/// included, except when the result is marked `range.depends_on_below`:
+/// then extract the range again with the other overload, given the message
+/// of the range below.
 ///
 /// \param grid the whole regular grid
 /// \param source the fields, a model of `ScalarFieldSource`
@@ -297,124 +542,29 @@ void extract_boolean_isosurface_slab_range(const Tetrahedral_grid_3<GeomTraits>&
                                            std::size_t last_layer, Boolean_isosurface_slab_range& range,
                                            const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  typedef internal::Tbiso_vertex_key Key;
+  internal::extract_slab_range<ConcurrencyTag>(grid, source, expression, first_layer, last_layer, nullptr, range, np);
+}
 
-  const std::array<std::size_t, 3>& n = grid.vertex_counts();
-  const std::size_t layers = n[2] - 1, layer_size = n[0] * n[1];
-  if(!(first_layer <= last_layer && last_layer <= layers))
-    throw Invalid_input_error("the cube layers [" + std::to_string(first_layer) + ", " + std::to_string(last_layer) +
-                              ") are not within the grid's " + std::to_string(layers) + " layers");
-  const std::size_t N = source.number_of_fields();
-  if(expression.number_of_variables() > N)
-    throw Invalid_input_error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
-                              " but there are only " + std::to_string(N) + " fields");
-  const bool close = choose_parameter(get_parameter(np, internal_np::close_at_domain_boundary), false);
-  const std::size_t slab =
-      std::max<std::size_t>(1, choose_parameter(get_parameter(np, internal_np::slab_layers), std::size_t(8)));
-
-  range = Boolean_isosurface_slab_range();
-  range.first_layer = first_layer;
-  range.last_layer = last_layer;
-  range.number_of_layers = layers;
-  const internal::Tbiso_tetrahedron_evaluator prototype(expression, close);
-  const std::size_t number_of_slabs = (last_layer - first_layer + slab - 1) / slab;
-  const std::size_t window =
-      internal::is_parallel_tag<ConcurrencyTag>() ? 2 * std::max<std::size_t>(1, std::thread::hardware_concurrency()) : 1;
-
-  struct Slot
-  {
-    std::size_t k_begin = 0, k_end = 0;
-    std::vector<double> values;
-    internal::Tbiso_chunk chunk;
-  };
-  std::vector<Slot> slots((std::min)(window, (std::max<std::size_t>)(1, number_of_slabs)));
-  // Each slot keeps its buffer: sized once for the largest slab (plus two
-  // ghost layers and rounding), it is never reallocated.
-  for(Slot& slot : slots)
-    slot.values.reserve(((std::min)(slab, last_layer - first_layer) + 3) * layer_size * N);
-  std::unordered_map<Key, std::size_t, internal::Tbiso_vertex_key_hash> below, above;
-  std::vector<std::size_t> to_local;
-
-  for(std::size_t s0 = 0; s0 < number_of_slabs; s0 += slots.size())
-  {
-    const std::size_t count = (std::min)(slots.size(), number_of_slabs - s0);
-    // Read in order (one file), then evaluate the window (in parallel).
-    for(std::size_t w = 0; w < count; ++w)
-    {
-      Slot& slot = slots[w];
-      slot.k_begin = first_layer + (s0 + w) * slab;
-      slot.k_end = (std::min)(last_layer, slot.k_begin + slab);
-      const std::size_t lo = slot.k_begin > 0 ? slot.k_begin - 1 : 0, hi = (std::min)(n[2] - 1, slot.k_end + 1);
-      source.read(lo * layer_size, (hi - lo + 1) * layer_size, slot.values);
-    }
-    std::size_t held = 0;
-    for(const Slot& slot : slots)
-      held += slot.values.capacity();
-    range.peak_field_values = (std::max)(range.peak_field_values, held);
-    internal::concurrent_for<ConcurrencyTag>(count, [&](std::size_t w) {
-      Slot& slot = slots[w];
-      const std::size_t lo = slot.k_begin > 0 ? slot.k_begin - 1 : 0;
-      for(std::size_t k = 0; k < slot.values.size(); ++k)
-        if(!std::isfinite(slot.values[k]))
-          throw Non_finite_value_error("field " + std::to_string(k % N) + " has a non-finite value at vertex " +
-                                       std::to_string(lo * layer_size + k / N));
-      slot.chunk = internal::Tbiso_chunk();
-      internal::extract_grid_slab(grid, slot.values.data(), lo * layer_size, N, prototype, slot.k_begin, slot.k_end,
-                                  slot.chunk);
-    });
-    // Weld in slab order: the vertices of an inner slab boundary through
-    // `below`, those of the range's boundaries listed for the neighbours.
-    for(std::size_t w = 0; w < count; ++w)
-    {
-      internal::Tbiso_chunk& chunk = slots[w].chunk;
-      const std::size_t k_begin = slots[w].k_begin, k_end = slots[w].k_end;
-      range.number_of_evaluated_tetrahedra += chunk.evaluated;
-      chunk.index.clear();
-      above.clear();
-      to_local.resize(chunk.keys.size());
-      for(std::size_t v = 0; v < chunk.keys.size(); ++v)
-      {
-        const std::size_t z = internal::carrier_layer(chunk.keys[v], layer_size);
-        if(z == k_begin && k_begin != first_layer)
-        {
-          const auto found = below.find(chunk.keys[v]);
-          if(found != below.end())
-          {
-            to_local[v] = found->second;
-            continue;
-          }
-        }
-        to_local[v] = range.points.size();
-        range.points.push_back(chunk.points[v]);
-        if(z == k_begin && k_begin == first_layer && first_layer > 0)
-        {
-          range.bottom_vertices.push_back(to_local[v]);
-          internal::append_key(range.bottom_keys, chunk.keys[v]);
-        }
-        if(z == k_end)
-        {
-          if(k_end != last_layer)
-            above.emplace(chunk.keys[v], to_local[v]);
-          else if(last_layer < layers)
-          {
-            range.top_vertices.push_back(to_local[v]);
-            internal::append_key(range.top_keys, chunk.keys[v]);
-          }
-        }
-      }
-      for(std::size_t p = 0; p + 1 < chunk.polygon_begin.size(); ++p)
-      {
-        for(std::size_t k = chunk.polygon_begin[p]; k < chunk.polygon_begin[p + 1]; ++k)
-          range.polygon_vertices.push_back(to_local[chunk.polygon_vertices[k]]);
-        range.polygon_begin.push_back(range.polygon_vertices.size());
-        range.labels.push_back(chunk.labels[p]);
-      }
-      below.swap(above);
-      chunk = internal::Tbiso_chunk();
-    }
-  }
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// As the overload above, given `message_from_below`, the
+/// `top_layer_message()` of the range just below: the welding of the first
+/// slab then takes the single-process decisions whatever the input, and the
+/// result never `depends_on_below`.  Pass the same message to
+/// `match_boolean_isosurface_slab_range()`.  The range below must be final
+/// (not itself `depends_on_below`), so ranges that depend on the one below
+/// are extracted again in order, bottom up.
+/// \throws Invalid_input_error as the overload above, or if the message is malformed.
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename FieldSource,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void extract_boolean_isosurface_slab_range(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource& source,
+                                           const Boolean_expression& expression, std::size_t first_layer,
+                                           std::size_t last_layer,
+                                           const std::vector<std::uint64_t>& message_from_below,
+                                           Boolean_isosurface_slab_range& range,
+                                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::extract_slab_range<ConcurrencyTag>(grid, source, expression, first_layer, last_layer, &message_from_below,
+                                               range, np);
 }
 
 } // namespace Boolean_isosurfacing

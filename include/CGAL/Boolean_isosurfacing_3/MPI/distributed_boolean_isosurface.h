@@ -5,7 +5,7 @@
 #define CGAL_BOOLEAN_ISOSURFACING_3_MPI_DISTRIBUTED_BOOLEAN_ISOSURFACE_H
 
 // TBISO on the ranks of an MPI communicator (doc/Boolean_isosurfacing_3/distributed.md):
-// - rank r gets the contiguous cube layers `slab_range_of_part(layers, r, K)`;
+// - rank r gets the contiguous cube layers `slab_range_of_part(layers, r, K, slab_layers)`;
 // - it reads only its vertex layers plus one ghost layer on each side of a
 //   raw field file, with MPI_File_read_at (`Mpi_raw_scalar_field_reader`);
 // - it extracts them (`extract_boolean_isosurface_slab_range()`);
@@ -23,6 +23,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -126,8 +127,11 @@ struct Boolean_isosurface_distributed_statistics
   /// This rank's cube layers `[first_layer, last_layer)`.
   std::size_t first_layer = 0, last_layer = 0;
   std::size_t rank_vertices = 0, rank_polygons = 0;
-  /// Words of the boundary message this rank sent up (0 for the top rank).
+  /// Words of the boundary messages this rank sent up (0 for the top rank).
   std::size_t sent_words = 0;
+  /// Whether this rank extracted its range a second time, with the message
+  /// from below (`Boolean_isosurface_slab_range::depends_on_below`).
+  bool extracted_again = false;
   std::size_t peak_field_values = 0;
   /// This rank's wall times: extraction (reading included), welding
   /// (exchange and prefix sums), writing.
@@ -175,7 +179,11 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
   const std::size_t layers = grid.vertex_counts()[2] - 1;
-  const std::pair<std::size_t, std::size_t> mine = slab_range_of_part(layers, std::size_t(rank), std::size_t(size));
+  // Whole slabs per rank: each rank welds the single process's chunks.
+  const std::size_t slab = std::max<std::size_t>(
+      1, parameters::choose_parameter(parameters::get_parameter(np, internal_np::slab_layers), std::size_t(8)));
+  auto range_of = [&](int r) { return slab_range_of_part(layers, std::size_t(r), std::size_t(size), slab); };
+  const std::pair<std::size_t, std::size_t> mine = range_of(rank);
   Boolean_isosurface_distributed_statistics stats;
   stats.first_layer = mine.first;
   stats.last_layer = mine.second;
@@ -186,22 +194,46 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
     extract_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second, range, np);
   });
   stats.extraction_seconds = internal::seconds_since(start);
-  stats.max_extraction_seconds = mpi::maximum(comm, stats.extraction_seconds);
 
   // The one neighbour exchange: top-layer keys go to the rank above, when
   // both ranges are non-empty (empty ranges are the last ranks).
   start = std::chrono::steady_clock::now();
   const bool active = mine.first < mine.second;
-  const bool above_active = rank + 1 < size && slab_range_of_part(layers, std::size_t(rank + 1), std::size_t(size)).first <
-                                                   slab_range_of_part(layers, std::size_t(rank + 1), std::size_t(size)).second;
-  std::vector<std::uint64_t> up = active && above_active ? top_layer_message(range) : std::vector<std::uint64_t>();
-  stats.sent_words = up.size();
+  const bool above_active = rank + 1 < size && range_of(rank + 1).first < range_of(rank + 1).second;
   std::vector<std::uint64_t> from_below;
-  mpi::on_all_ranks(comm, [&] {
-    from_below = mpi::exchange(comm, up, active && above_active ? rank + 1 : MPI_PROC_NULL,
-                               active && rank > 0 ? rank - 1 : MPI_PROC_NULL);
-  });
-  std::vector<std::uint64_t>().swap(up);
+  auto exchange_up = [&] {
+    std::vector<std::uint64_t> up = active && above_active ? top_layer_message(range) : std::vector<std::uint64_t>();
+    stats.sent_words += up.size();
+    mpi::on_all_ranks(comm, [&] {
+      from_below = mpi::exchange(comm, up, active && above_active ? rank + 1 : MPI_PROC_NULL,
+                                 active && rank > 0 ? rank - 1 : MPI_PROC_NULL);
+    });
+  };
+  // A range whose first slab has two bottom-layer vertices at one position
+  // (rare: degenerate inputs) must be extracted again with the final message
+  // of the range below.  Its depth is its number of such ranges in a row
+  // ending with it; ranges of depth t are redone in round t.
+  std::vector<int> depends(std::size_t(size), 0);
+  const int mine_depends = range.depends_on_below ? 1 : 0;
+  MPI_Allgather(&mine_depends, 1, MPI_INT, depends.data(), 1, MPI_INT, comm);
+  std::vector<int> depth(std::size_t(size), 0);
+  for(int r = 0; r < size; ++r)
+    depth[std::size_t(r)] = depends[std::size_t(r)] ? (r > 0 ? depth[std::size_t(r - 1)] : 0) + 1 : 0;
+  const int rounds = *std::max_element(depth.begin(), depth.end());
+  for(int t = 1; t <= rounds; ++t)
+  {
+    exchange_up();
+    const auto again = std::chrono::steady_clock::now();
+    mpi::on_all_ranks(comm, [&] {
+      if(depth[std::size_t(rank)] == t)
+        extract_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second,
+                                                              from_below, range, np);
+    });
+    stats.extraction_seconds += internal::seconds_since(again);
+  }
+  stats.extracted_again = depth[std::size_t(rank)] > 0;
+  stats.max_extraction_seconds = mpi::maximum(comm, stats.extraction_seconds);
+  exchange_up();
   Boolean_isosurface_slab_range_welding welding;
   mpi::on_all_ranks(comm, [&] { welding = match_boolean_isosurface_slab_range(range, from_below); });
   std::vector<std::uint64_t>().swap(from_below);
