@@ -25,5 +25,8 @@ export LSAN_OPTIONS="suppressions=$(pwd)/../scripts/lsan.supp"
 # 3 to 8 minutes each).
 skip='^(headers_compile_alone|headers_compile_together|install_package|downstream_find_package'
 skip+='|Reconstruct\..*|Topology\.Shared_meshes_60k.*|TbisoTool\.BunnyOnAGridHasOneCutLoop'
+# The sharp-feature cases against an exact corefinement (1-5 min each under
+# ASan; BoxMinusMovedBox and the table tests keep the feature code covered).
+skip+='|CsgFeatures\.(CylinderUnitedWithABox|BoxIntersectedWithARotatedBox|IsotropicRemeshingKeepsTheCreases)'
 skip+='|Meshes/SharedMesh\.AgreesWithExactVolumeAndPmpVolume/meshes_(armadillo|bunny_hoppe)_.*)$'
 ctest -j "$jobs" --output-on-failure --timeout 1500 -E "$skip"
