@@ -28,9 +28,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <functional>
+#include <limits>
 #include <numeric>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -82,30 +81,52 @@ struct Component_labels
 
 inline Component_labels label_components(const std::vector<Lattice_triangle>& triangles)
 {
-  struct Key
-  {
-    std::array<double, 3> p;
-    std::uint32_t mesh;
-    bool operator==(const Key& o) const { return p == o.p && mesh == o.mesh; }
-  };
-  struct Key_hash
-  {
-    std::size_t operator()(const Key& k) const
+  // Weld equal (position, mesh) corners with an open-addressing table of
+  // corner numbers: no allocation per entry (an unordered_map made this
+  // check ~10 % of a whole csg run).
+  const std::size_t corners = 3 * triangles.size();
+  auto point_of = [&](std::size_t c) -> const std::array<double, 3>& { return triangles[c / 3].p[c % 3]; };
+  auto hash = [&](std::size_t c) {
+    std::uint64_t h = triangles[c / 3].mesh * 0x9e3779b97f4a7c15ULL;
+    for(double x : point_of(c))
     {
-      std::size_t h = std::hash<std::uint32_t>()(k.mesh);
-      for(double c : k.p)
-      {
-        std::uint64_t bits;
-        const double d = c == 0 ? 0.0 : c; // -0 and +0 are one point
-        std::memcpy(&bits, &d, sizeof bits);
-        h ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-      }
-      return h;
+      std::uint64_t bits;
+      const double d = x == 0 ? 0.0 : x; // -0 and +0 are one point
+      std::memcpy(&bits, &d, sizeof bits);
+      h = (h ^ bits) * 0xff51afd7ed558ccdULL;
+      h ^= h >> 32;
     }
+    return h;
   };
-  std::unordered_map<Key, std::uint32_t, Key_hash> vertex_of;
-  vertex_of.reserve(triangles.size());
-  std::vector<std::uint32_t> parent;
+  std::size_t table_size = 16;
+  while(table_size < 2 * corners)
+    table_size *= 2;
+  const std::uint32_t empty = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> table(table_size, empty); // a corner number, or empty
+  std::vector<std::uint32_t> vertex_of_corner(corners), parent;
+  for(std::size_t c = 0; c < corners; ++c)
+  {
+    std::size_t slot = hash(c) & (table_size - 1);
+    for(;; slot = (slot + 1) & (table_size - 1))
+    {
+      const std::uint32_t other = table[slot];
+      if(other == empty)
+      {
+        table[slot] = std::uint32_t(c);
+        vertex_of_corner[c] = std::uint32_t(parent.size());
+        parent.push_back(std::uint32_t(parent.size()));
+        break;
+      }
+      const std::array<double, 3>& p = point_of(c);
+      const std::array<double, 3>& q = point_of(other);
+      if(triangles[other / 3].mesh == triangles[c / 3].mesh && p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
+      {
+        vertex_of_corner[c] = vertex_of_corner[other];
+        break;
+      }
+    }
+  }
+  std::vector<std::uint32_t>().swap(table);
   auto find = [&](std::uint32_t v) {
     while(parent[v] != v)
     {
@@ -114,34 +135,26 @@ inline Component_labels label_components(const std::vector<Lattice_triangle>& tr
     }
     return v;
   };
-  std::vector<std::array<std::uint32_t, 3>> corner(triangles.size());
   for(std::size_t t = 0; t < triangles.size(); ++t)
-    for(int c = 0; c < 3; ++c)
-    {
-      const auto inserted = vertex_of.emplace(Key{triangles[t].p[c], triangles[t].mesh}, std::uint32_t(parent.size()));
-      if(inserted.second)
-        parent.push_back(std::uint32_t(parent.size()));
-      corner[t][c] = inserted.first->second;
-    }
-  for(const auto& c : corner)
     for(int k = 1; k < 3; ++k)
     {
-      const std::uint32_t a = find(c[0]), b = find(c[k]);
+      const std::uint32_t a = find(vertex_of_corner[3 * t]), b = find(vertex_of_corner[3 * t + k]);
       if(a != b)
         parent[(std::max)(a, b)] = (std::min)(a, b);
     }
   Component_labels labels;
   labels.of_triangle.resize(triangles.size());
-  std::unordered_map<std::uint32_t, std::uint32_t> component_of_root;
+  std::vector<std::uint32_t> component_of_root(parent.size(), empty);
   std::vector<std::size_t> per_mesh;
   std::vector<Accurate_sum<double>> volume;
   std::vector<std::array<double, 3>> reference;
   for(std::size_t t = 0; t < triangles.size(); ++t)
   {
     const Lattice_triangle& tri = triangles[t];
-    const auto inserted = component_of_root.emplace(find(corner[t][0]), std::uint32_t(labels.components.size()));
-    if(inserted.second)
+    std::uint32_t& id = component_of_root[find(vertex_of_corner[3 * t])];
+    if(id == empty)
     {
+      id = std::uint32_t(labels.components.size());
       if(per_mesh.size() <= tri.mesh)
         per_mesh.resize(tri.mesh + 1, 0);
       Component_labels::Component c;
@@ -152,7 +165,6 @@ inline Component_labels label_components(const std::vector<Lattice_triangle>& tr
       volume.emplace_back();
       reference.push_back(tri.p[0]); // tetrahedra about a point of the component: less cancellation
     }
-    const std::uint32_t id = inserted.first->second;
     labels.of_triangle[t] = id;
     Component_labels::Component& c = labels.components[id];
     ++c.triangles;
