@@ -2,7 +2,7 @@
 # Installs, from Debian's packages, whatever the build needs and is missing.
 set -euo pipefail
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
-          libgtest-dev libbenchmark-dev libtbb-dev libfast-float-dev
+          libgtest-dev libbenchmark-dev libtbb-dev libfast-float-dev libcli11-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools python3-venv  # Python module
           clang libclang-rt-14-dev   # libFuzzer harnesses (scripts/fuzz.sh)
           libopenmpi-dev openmpi-bin # distributed drivers (mpirun)
