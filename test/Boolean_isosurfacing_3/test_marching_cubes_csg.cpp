@@ -998,6 +998,56 @@ TEST(McCsgApi, ComplementIsReportedAsOpenAtTheLatticeBoundary)
 
 // ------------------------------------------------------------------ 7. bad input
 
+// The resolution check of the result itself: a box minus a box 0.02 smaller
+// on every side is a shell 0.02 thick.  At spacing 1/16 most x-line
+// intervals through its two x-walls hold no lattice point; at 1/128 every
+// interval of the result is at least 0.02 > 2 spacings long.
+TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
+{
+  const Mesh outer = make_box(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh inner = make_box(Point(0.02, 0.02, 0.02), Point(0.98, 0.98, 0.98));
+  const CGAL::Bbox_3 box(0, 0, 0, 1, 1, 1);
+  const Soup coarse = run_csg({&outer, &inner}, BI::Boolean_expression::difference(),
+                              BI::Regular_lattice_3::enclosing(box, 1.0 / 16));
+  EXPECT_EQ(coarse.statistics.under_resolved_components.size(), 0u) << "each input alone is resolved";
+  EXPECT_GT(coarse.statistics.thin_result_intervals, 0u);
+  EXPECT_LT(coarse.statistics.thin_result_intervals, coarse.statistics.result_intervals);
+  const double coarse_part = coarse.statistics.thin_result_volume / coarse.statistics.result_line_volume;
+  std::cout << "shell at 1/16: " << coarse.statistics.thin_result_intervals << " of "
+            << coarse.statistics.result_intervals << " intervals thin, " << 100 * coarse_part
+            << " % of the line volume, suggested spacing " << coarse.statistics.thin_result_suggested_spacing << "\n";
+  // Measured on the lattice's x-lines: none runs inside the y- and z-walls
+  // (0.02 thick, lines 1/16 apart), so all of the line volume is the thin
+  // x-wall intervals (measured: 100 %).
+  EXPECT_GT(coarse_part, 0.5);
+  EXPECT_LE(coarse_part, 1 + 1e-12);
+  EXPECT_GT(coarse.statistics.thin_result_suggested_spacing, 0);
+  EXPECT_LE(coarse.statistics.thin_result_suggested_spacing, 0.01 + 1e-12);
+
+  const Soup fine = run_csg({&outer, &inner}, BI::Boolean_expression::difference(),
+                            BI::Regular_lattice_3::enclosing(box, 1.0 / 128));
+  EXPECT_GT(fine.statistics.result_intervals, coarse.statistics.result_intervals);
+  EXPECT_EQ(fine.statistics.thin_result_intervals, 0u);
+  EXPECT_EQ(fine.statistics.thin_result_volume, 0);
+  EXPECT_EQ(fine.statistics.thin_result_suggested_spacing, 0);
+
+  // Two overlapping boxes: nothing thin, and the line volume is exact along
+  // x-lines (box faces between lattice planes).
+  const Mesh moved = make_box(Point(0.5, 0.25, 0.25), Point(1.5, 0.75, 0.75));
+  const Soup both = run_csg({&outer, &moved}, BI::Boolean_expression::union_of(2),
+                            BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(0, 0, 0, 1.5, 1, 1), 1.0 / 16));
+  EXPECT_EQ(both.statistics.thin_result_intervals, 0u);
+  EXPECT_GT(both.statistics.result_line_volume, 0.5);
+  // Without the check nothing is measured.
+  std::vector<Point> points;
+  std::vector<Triangle> triangles;
+  const BI::Marching_cubes_csg_statistics off = BI::marching_cubes_csg(
+      refs({&outer, &inner}), BI::Boolean_expression::difference(), BI::Regular_lattice_3::enclosing(box, 1.0 / 16),
+      points, triangles, BI::parameters::resolution_check(false));
+  EXPECT_EQ(off.result_intervals, 0u);
+}
+
+
 template <typename Exception>
 void expect_error(const std::function<void()>& f, const std::string& fragment)
 {

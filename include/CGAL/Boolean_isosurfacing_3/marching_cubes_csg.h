@@ -99,6 +99,25 @@ struct Marching_cubes_csg_statistics
   std::size_t checked_components = 0;
   /// The components the lattice does not resolve (see `checked_components`).
   std::vector<Marching_cubes_csg_component_report> under_resolved_components;
+  /// Resolution of the result itself (same named parameter): along the
+  /// lattice lines, the intervals inside or outside the result between two
+  /// of its surface crossings, and those that hold no lattice point --
+  /// walls thinner than a cell, missing from the output, or gaps filled in
+  /// (a difference of nearly coincident solids, say).
+  std::size_t result_intervals = 0;
+  /// The intervals of `result_intervals` that hold no lattice point.
+  std::size_t thin_result_intervals = 0;
+  /// The volume of the thin intervals (line lengths times spacing^2),
+  /// beside `result_line_volume`, the result's volume measured the same way,
+  /// along the axis where their ratio is largest (the lines that cross a
+  /// thin wall see it): a lower bound of the part the output gets wrong.
+  double thin_result_volume = 0;
+  /// The result's volume as the lengths of its line intervals times
+  /// spacing^2, along the axis of `thin_result_volume`.
+  double result_line_volume = 0;
+  /// A spacing that puts lattice points in most thin intervals (half their
+  /// median length), or 0 when there is none.
+  double thin_result_suggested_spacing = 0;
 };
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
@@ -586,8 +605,16 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   statistics.boundary_points_inside = builder.compute_states(progress.part(0.6, 0.65));
   statistics.crossings = classifier.number_of_crossings();
   if(check_resolution)
+  {
     statistics.checked_components = Marching_cubes_csg::under_resolved_components(
         components, classifier, statistics.under_resolved_components);
+    const Marching_cubes_csg::Thin_result_measure thin = Marching_cubes_csg::measure_thin_result(classifier, expression);
+    statistics.result_intervals = thin.intervals;
+    statistics.thin_result_intervals = thin.thin_intervals;
+    statistics.thin_result_volume = thin.thin_volume;
+    statistics.result_line_volume = thin.line_volume;
+    statistics.thin_result_suggested_spacing = 0.5 * thin.median_thin_length;
+  }
   const double seconds_yz = classifier.seconds(1) + classifier.seconds(2);
   statistics.seconds_classification = seconds_since(start) - seconds_yz;
 

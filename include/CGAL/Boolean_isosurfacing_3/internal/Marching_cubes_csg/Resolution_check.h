@@ -17,6 +17,7 @@
 // perturbation makes every crossing count), so the points between a pair
 // are exactly the lattice points of the line inside the component.
 
+#include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/Lattice_classifier_3.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Accurate_sum.h>
@@ -253,6 +254,95 @@ inline std::size_t under_resolved_components(const Component_labels& labels, con
     out.push_back(report);
   }
   return judged;
+}
+
+// The result seen along the lattice lines.  Between two consecutive changes
+// of the result's value along a line (its surface crossings, exactly
+// ordered by the classifier) lies an interval inside or outside the result.
+// One that holds no lattice point -- both crossings on the same lattice
+// edge -- is invisible to Marching Cubes: a wall missing from the output or a
+// gap filled in.  The input-component check cannot see this (each input may
+// be well resolved while their difference is a thin shell), so it is
+// measured on the result itself, in one pass over the crossings.
+struct Thin_result_measure
+{
+  std::size_t intervals = 0;      // result intervals between two crossings, all lines
+  std::size_t thin_intervals = 0; // ... of which hold no lattice point
+  // Along the axis where thin_volume / line_volume is largest (a thin wall
+  // is seen by the lines that cross it, not by those parallel to it):
+  double line_volume = 0;        // the result's volume as line lengths x spacing^2
+  double thin_volume = 0;        // the thin intervals' part, the same way (inside and outside ones)
+  double median_thin_length = 0; // of the thin intervals, all axes
+};
+
+inline Thin_result_measure measure_thin_result(const Lattice_classifier_3& classifier,
+                                               const Boolean_expression& expression)
+{
+  const Regular_lattice_3& lattice = classifier.lattice();
+  const std::array<std::size_t, 3>& n = lattice.number_of_points();
+  const double area = lattice.spacing() * lattice.spacing();
+  const std::size_t meshes = classifier.number_of_meshes();
+  Thin_result_measure m;
+  std::vector<double> thin_lengths;
+  std::array<double, 3> line_volume{{0, 0, 0}}, thin_volume{{0, 0, 0}};
+  for(int axis = 0; axis < 3; ++axis)
+    for(std::size_t line = 0; line < classifier.number_of_lines(axis); ++line)
+    {
+      const Lattice_classifier_3::Crossing_range crossings = classifier.crossings_on_line(axis, line);
+      if(crossings.empty())
+        continue;
+      // The line's first point; its masks give the state the crossings toggle.
+      const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+      std::array<std::size_t, 3> first{{0, 0, 0}};
+      first[u] = line % n[u];
+      first[v] = line / n[u];
+      std::uint64_t state = 0;
+      for(std::size_t mesh = 0; mesh < meshes; ++mesh)
+        if(classifier.is_inside(mesh, first[0], first[1], first[2]))
+          state |= std::uint64_t(1) << mesh;
+      bool inside = expression.evaluate(state);
+      bool have_change = false;
+      std::uint32_t change_index = 0;
+      double change_position = lattice.coordinate(axis, 0);
+      for(const Lattice_crossing& c : crossings)
+      {
+        state ^= std::uint64_t(1) << c.mesh;
+        const bool now = expression.evaluate(state);
+        if(now == inside)
+          continue;
+        if(have_change)
+        {
+          ++m.intervals;
+          if(c.index == change_index)
+          {
+            ++m.thin_intervals;
+            thin_volume[axis] += (c.position - change_position) * area;
+            thin_lengths.push_back(c.position - change_position);
+          }
+        }
+        if(inside)
+          line_volume[axis] += (c.position - change_position) * area;
+        inside = now;
+        have_change = true;
+        change_index = c.index;
+        change_position = c.position;
+      }
+      if(inside)
+        line_volume[axis] += (lattice.coordinate(axis, n[axis] - 1) - change_position) * area;
+    }
+  for(int axis = 0; axis < 3; ++axis)
+    if(thin_volume[axis] * m.line_volume > m.thin_volume * line_volume[axis] || m.line_volume == 0)
+    {
+      m.line_volume = line_volume[axis];
+      m.thin_volume = thin_volume[axis];
+    }
+  if(!thin_lengths.empty())
+  {
+    std::nth_element(thin_lengths.begin(), thin_lengths.begin() + std::ptrdiff_t(thin_lengths.size() / 2),
+                     thin_lengths.end());
+    m.median_thin_length = thin_lengths[thin_lengths.size() / 2];
+  }
+  return m;
 }
 
 } // namespace Marching_cubes_csg
