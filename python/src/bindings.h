@@ -16,6 +16,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#  include <tbb/task_arena.h>
+#endif
+
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -235,6 +239,24 @@ std::vector<std::vector<std::size_t>> polygons_from(const py::handle& object, st
 
 /// Polygons as a list of 1-D int64 arrays.
 py::list polygons_to_list(const std::vector<std::vector<std::size_t>>& polygons);
+
+/// Runs `f` with at most `threads` TBB worker threads (0: all).  The
+/// library's parallel code reads the arena's concurrency, so threads=1 runs
+/// the parallel code path on one thread, with the same output.
+template <typename F>
+auto with_threads(int threads, F&& f)
+{
+  if(threads < 0)
+    throw BI::Invalid_input_error("threads must be >= 0 (0: all cores), got " + std::to_string(threads));
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads > 0)
+  {
+    tbb::task_arena arena(threads);
+    return arena.execute(std::forward<F>(f));
+  }
+#endif
+  return f();
+}
 
 void bind_tbiso(py::module_& m);
 

@@ -25,10 +25,6 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/property_map.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#  include <tbb/task_arena.h>
-#endif
-
 #include <boost/range/iterator_range.hpp>
 
 #include <algorithm>
@@ -69,24 +65,6 @@ boost::iterator_range<const Int_triangle*> triangle_rows(const Index_array& F)
 {
   const Int_triangle* first = reinterpret_cast<const Int_triangle*>(F.data());
   return {first, first + F.shape(0)};
-}
-
-// Runs `f` with at most `threads` TBB worker threads (0: all).  The
-// library's parallel code reads the arena's concurrency, so threads=1 runs
-// the parallel code path on one thread, with the same output.
-template <typename F>
-auto with_threads(int threads, F&& f)
-{
-  if(threads < 0)
-    throw BI::Invalid_input_error("threads must be >= 0 (0: all cores), got " + std::to_string(threads));
-#ifdef CGAL_LINKED_WITH_TBB
-  if(threads > 0)
-  {
-    tbb::task_arena arena(threads);
-    return arena.execute(std::forward<F>(f));
-  }
-#endif
-  return f();
 }
 
 // Rethrows the active package exception with `prefix` before its message,

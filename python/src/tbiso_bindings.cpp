@@ -22,10 +22,6 @@
 
 #include <CGAL/Surface_mesh.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#  include <tbb/task_arena.h>
-#endif
-
 #include <chrono>
 #include <optional>
 
@@ -141,21 +137,6 @@ void smooth_soup(Soup& soup, const BI::Crease_network& creases, long long iterat
 py::list polylines_to_list(const BI::Crease_network& creases)
 {
   return polygons_to_list(creases.polylines);
-}
-
-template <typename F>
-auto with_threads(int threads, F&& f)
-{
-  if(threads < 0)
-    throw BI::Invalid_input_error("threads must be >= 0 (0: all cores), got " + std::to_string(threads));
-#ifdef CGAL_LINKED_WITH_TBB
-  if(threads > 0)
-  {
-    tbb::task_arena arena(threads);
-    return arena.execute(std::forward<F>(f));
-  }
-#endif
-  return f();
 }
 
 py::tuple boolean_isosurface_py(const py::handle& fields_object, const std::string& expr,
