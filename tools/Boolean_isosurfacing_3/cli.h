@@ -157,7 +157,7 @@ public:
         limit.emplace(tbb::global_control::max_allowed_parallelism, sequential() ? 1 : m_threads);
 #endif
       const int status = body();
-      if(m_json && status == 0)
+      if(m_json) // also for a run that failed on some inputs (volume), or --strict
         print_json();
       return status;
     }

@@ -2,8 +2,9 @@
 // by Hoppe's tangent-plane signed distance and Marching Cubes
 // (the contour-tracing assignment, [ContourTracing] in the manual's references).
 //
-//   contour [FILE|-] [-o out.tris|out.off|out.ply|out.obj|out.stl] [--cell r | --cells N] [--k K]
+//   contour [FILE|-] [-o out.tris|out.off|out.ply|out.obj|out.stl] [--spacing h | --cells N] [--k K]
 //           [--rho R] [--delta D] [--max-jump J]
+//   and the common options of cli.h (--threads, --sequential, --json, --quiet, --version)
 //
 // FILE: .pts (the seed's format, or Hoppe's A3d points), .xyz, .pwn, .ply;
 // "-": a .pts stream on standard input (`contour - < mechpart.pts`; with no
@@ -11,9 +12,9 @@
 // count, the time of every stage and the triangle count on stdout.
 // `contour --help` lists the options.  Exit status: 0, 1 for a bad file or a
 // failed computation, 2 for a bad command line; every error is one line on
-// stderr.
+// stderr (doc/Boolean_isosurfacing_3/tools.md).
 
-#include "tool_support.h"
+#include "cli.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/pts.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_point_samples.h>
@@ -47,24 +48,15 @@ namespace {
 
 using biso_tools::Usage_error;
 
-const char* help_text =
+using biso_tools::Tool;
+
+const char* description =
     "contour: oriented (or unoriented) point samples -> closed triangle mesh (Hoppe et al. 1992)\n"
-    "usage: contour [FILE|-] [-o OUT] [--cell r | --cells N] [--k K] [--rho R] [--delta D] [--max-jump J]\n"
-    "  FILE             .pts (x y z [nx ny nz] per line), .xyz, .pwn or .ply; '-' reads .pts from standard\n"
-    "                   input; with no FILE standard input is read too, unless it is a terminal (then this\n"
-    "                   is a usage error: give FILE, or '-' to type the points, ended by Ctrl-D)\n"
-    "  -o OUT           write the mesh: .tris (the seed's format), .off, .ply, .obj or .stl; checked\n"
-    "                   before computing\n"
-    "  --cell r         lattice cell size (positive; default about 1.25 x the mean sample spacing)\n"
-    "  --cells N        N cells along the longest side of the samples' bounding box (whole, >= 1)\n"
-    "  --k K            neighbours per tangent plane (whole, 3 to 1024; default 15)\n"
-    "  --rho R          sampling density (positive; default estimated)\n"
-    "  --delta D        noise level (>= 0; default estimated)\n"
-    "  --max-jump J     skip cubes where f jumps by more than J cells (>= 0; inf = Hoppe's plain rule;\n"
-    "                   default 3 cells + 2 delta)\n"
-    "  -h, --help       this help\n"
-    "A lattice estimated to cross more than 2^27 surface cubes (about 10 GB of output) is refused.\n"
-    "exit status: 0 success, 1 bad input file or failed computation, 2 bad command line\n";
+    "usage: contour [FILE|-] [-o OUT] [--spacing h | --cells N] [--k K] [--rho R] [--delta D] [--max-jump J]\n"
+    "  FILE: .pts (x y z [nx ny nz] per line), .xyz, .pwn or .ply; '-' reads .pts from standard input; with no\n"
+    "  FILE standard input is read too, unless it is a terminal (then this is a usage error: give FILE, or '-'\n"
+    "  to type the points, ended by Ctrl-D).\n"
+    "  A lattice estimated to cross more than 2^27 surface cubes (about 10 GB of output) is refused.\n";
 
 // Largest --k: the neighbour lists take points x K entries, and beyond a
 // few dozen neighbours a neighbourhood is no longer a tangent plane.
@@ -79,77 +71,79 @@ struct Options
   std::string output;
   std::optional<double> cell;
   std::optional<std::size_t> cells;
-  std::string lattice_flag; // "--cell r" or "--cells N", for messages
+  std::string lattice_flag; // "--spacing h" or "--cells N", for messages
   std::optional<double> rho, delta;
   double max_jump = -1; // default of the library
   std::size_t k = 15;
-  bool help = false;
 };
 
-Options parse(int argc, char** argv)
+// The options' text, converted and checked once parsed.
+struct Option_text
+{
+  std::string spacing, cells, k, rho, delta, max_jump;
+};
+
+void add_options(Tool& tool, Options& o, Option_text& t)
+{
+  CLI::App& app = tool.app();
+  app.add_option("-o", o.output, "write the mesh: .off, .obj, .ply, .stl, or .tris (the seed's format); checked "
+                                 "before computing")
+      ->type_name("OUT");
+  biso_tools::add_lattice_options(app, t.cells, t.spacing, "the samples' bounding box");
+  // The old name of --spacing, kept for scripts.
+  app.add_option("--cell", t.spacing)->group("");
+  app.add_option("--k", t.k, "neighbours per tangent plane (whole, 3 to 1024; default 15)")->type_name("K");
+  app.add_option("--rho", t.rho, "sampling density (positive; default estimated)")->type_name("R");
+  app.add_option("--delta", t.delta, "noise level (>= 0; default estimated)")->type_name("D");
+  app.add_option("--max-jump", t.max_jump,
+                 "skip cubes where f jumps by more than J cells (>= 0; inf = Hoppe's plain rule; default 3 cells + "
+                 "2 delta)")
+      ->type_name("J");
+}
+
+// \throws Usage_error.
+void check_options(Tool& tool, Options& o, const Option_text& t)
 {
   using biso_tools::Sign_rule;
-  Options o;
-  std::set<std::string> seen;
-  for(int i = 1; i < argc; ++i)
+  const CLI::App& app = tool.app();
+  if(app.count("-o"))
+    biso_tools::check_mesh_extension("-o", o.output, {"tris"});
+  const std::size_t spacing_flags = app.count("--spacing") + app.count("--cell");
+  if(spacing_flags > 1)
+    throw Usage_error("--spacing is given more than once");
+  const std::string spacing_name = app.count("--cell") ? "--cell" : "--spacing";
+  if(spacing_flags)
   {
-    const std::string a = argv[i];
-    const bool is_flag = a.size() > 1 && a[0] == '-';
-    if(is_flag && !seen.insert(a).second)
-      throw Usage_error(biso_tools::printable(a) + " is given more than once");
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw Usage_error(a + " needs a value");
-      return argv[++i];
-    };
-    if(a == "-o")
-    {
-      o.output = value();
-      if(o.output.empty())
-        throw Usage_error("-o needs a file name, got an empty argument");
-      const std::string e = biso_tools::extension(o.output);
-      if(e != "tris" && e != "off" && e != "obj" && e != "ply" && e != "stl")
-        throw Usage_error("-o: " + biso_tools::quote_arg(o.output) +
-                          " has no supported extension (.tris, .off, .obj, .ply, .stl)");
-    }
-    else if(a == "--cell")
-    {
-      const std::string text = value();
-      o.cell = biso_tools::parse_real(a, text, Sign_rule::POSITIVE);
-      o.lattice_flag = a + " " + text;
-    }
-    else if(a == "--cells")
-    {
-      const std::string text = value();
-      o.cells = biso_tools::parse_count(a, text, 1, std::size_t(1) << 20, "a lattice has at most 2^20 cells per axis");
-      o.lattice_flag = a + " " + text;
-    }
-    else if(a == "--k")
-      o.k = biso_tools::parse_count(a, value(), 3, max_neighbors, "neighbour lists take points x K entries");
-    else if(a == "--rho")
-      o.rho = biso_tools::parse_real(a, value(), Sign_rule::POSITIVE);
-    else if(a == "--delta")
-      o.delta = biso_tools::parse_real(a, value(), Sign_rule::NON_NEGATIVE);
-    else if(a == "--max-jump")
-      o.max_jump = biso_tools::parse_real(a, value(), Sign_rule::NON_NEGATIVE, /* allow_infinity = */ true);
-    else if(a == "-h" || a == "--help")
-      o.help = true;
-    else if(is_flag)
-      throw Usage_error("unknown option " + biso_tools::quote_arg(a) + " (contour --help for usage)");
-    else if(o.have_input)
-      throw Usage_error("more than one input file: " + biso_tools::quote_arg(o.input) + " and " +
-                        biso_tools::quote_arg(a));
-    else
-    {
-      if(a.empty())
-        throw Usage_error("the input file name is empty");
-      o.input = a;
-      o.have_input = true;
-    }
+    o.cell = biso_tools::parse_real(spacing_name, t.spacing, Sign_rule::POSITIVE);
+    o.lattice_flag = spacing_name + " " + t.spacing;
+  }
+  if(app.count("--cells"))
+  {
+    o.cells = biso_tools::parse_count("--cells", t.cells, 1, std::size_t(1) << 20,
+                                      "a lattice has at most 2^20 cells per axis");
+    o.lattice_flag = "--cells " + t.cells;
+  }
+  if(app.count("--k"))
+    o.k = biso_tools::parse_count("--k", t.k, 3, max_neighbors, "neighbour lists take points x K entries");
+  if(app.count("--rho"))
+    o.rho = biso_tools::parse_real("--rho", t.rho, Sign_rule::POSITIVE);
+  if(app.count("--delta"))
+    o.delta = biso_tools::parse_real("--delta", t.delta, Sign_rule::NON_NEGATIVE);
+  if(app.count("--max-jump"))
+    o.max_jump = biso_tools::parse_real("--max-jump", t.max_jump, Sign_rule::NON_NEGATIVE, /* allow_infinity = */ true);
+  const std::vector<std::string>& files = tool.positionals();
+  if(files.size() > 1)
+    throw Usage_error("more than one input file: " + biso_tools::quote_arg(files[0]) + " and " +
+                      biso_tools::quote_arg(files[1]));
+  if(files.size() == 1)
+  {
+    if(files[0].empty())
+      throw Usage_error("the input file name is empty");
+    o.input = files[0];
+    o.have_input = true;
   }
   if(o.cell && o.cells)
-    throw Usage_error("--cell and --cells are exclusive");
-  return o;
+    throw Usage_error(spacing_name + " and --cells are exclusive");
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t)
@@ -177,7 +171,148 @@ void check_cell_size(double cell, double default_cell, std::size_t number_of_poi
   }
 }
 
-int run(const Options& options)
+typedef BI::Tangent_plane_signed_distance_3<K> Field;
+
+struct Samples
+{
+  std::vector<Point_3> points;
+  std::vector<Vector_3> normals;
+  std::vector<std::size_t> indices; // 0, 1, ...: the field's input range
+  bool has_normals = false;
+};
+
+Samples read_samples(Tool& tool, const Options& options)
+{
+  const biso_tools::Stopwatch watch;
+  Samples s;
+  s.has_normals = (options.input == "-") ? BI::IO::read_pts(std::cin, s.points, s.normals)
+                                         : BI::IO::read_point_samples(options.input, s.points, s.normals);
+  s.indices.resize(s.points.size());
+  for(std::size_t i = 0; i < s.indices.size(); ++i)
+    s.indices[i] = i;
+  tool.input(options.input);
+  tool.stage("read", "read " + std::to_string(s.points.size()) + " points", watch.seconds());
+  tool.summary().set("points", s.points.size());
+  tool.summary().set("normals", s.has_normals);
+  tool.human_stream() << "points: " << s.points.size() << (s.has_normals ? " (with normals)" : " (no normals)")
+                      << "\n";
+  return s;
+}
+
+// The field, with only the parameters the command line sets: the class
+// treats a negative rho or delta given explicitly as an error.
+void build_field(const Options& options, const Samples& s, std::optional<Field>& field)
+{
+  const auto point_map = CGAL::make_property_map(s.points);
+  const auto normal_map = CGAL::make_property_map(s.normals);
+  const double rho = options.rho ? *options.rho : -1.0, delta = options.delta ? *options.delta : -1.0;
+  const auto base = BI::parameters::number_of_neighbors(options.k).point_map(point_map);
+  auto build = [&](const auto& np) {
+    if(options.rho && options.delta)
+      field.emplace(s.indices, BI::parameters::sampling_density(rho, BI::parameters::noise_level(delta, np)));
+    else if(options.rho)
+      field.emplace(s.indices, BI::parameters::sampling_density(rho, np));
+    else if(options.delta)
+      field.emplace(s.indices, BI::parameters::noise_level(delta, np));
+    else
+      field.emplace(s.indices, np);
+  };
+  if(s.has_normals)
+    build(base.normal_map(normal_map));
+  else
+    build(base);
+}
+
+// The cell size the command line asks for (the field's default without a flag).
+double cell_size(const Options& options, const Samples& s, const Field& field)
+{
+  double cell = field.default_cell_size();
+  if(options.cell)
+    cell = *options.cell;
+  else if(options.cells)
+  {
+    std::array<double, 3> lo{{1e300, 1e300, 1e300}}, hi{{-1e300, -1e300, -1e300}};
+    for(const Point_3& p : s.points)
+      for(int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+      }
+    cell = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) / *options.cells;
+  }
+  if(options.cell || options.cells)
+    check_cell_size(cell, field.default_cell_size(), s.points.size(), options.lattice_flag);
+  return cell;
+}
+
+void report_field(Tool& tool, const Field& field)
+{
+  const auto& t = field.timings();
+  tool.stage("neighbors", "found the k nearest neighbours", t.neighbors);
+  tool.stage("planes", "fitted the tangent planes", t.planes);
+  tool.stage("orientation", "oriented the tangent planes", t.orientation);
+  if(field.input_normals_rejected())
+  {
+    const auto votes = field.input_normal_votes();
+    tool.warning("the input normals do not point outward (the extreme samples of " + std::to_string(votes.second) +
+                 " of " + std::to_string(votes.first) +
+                 " directions face inward); their signs are ignored and the planes are oriented as without normals");
+  }
+}
+
+void print_report(Tool& tool, const Field& field, const BI::Contouring_report& report, double read_seconds,
+                  std::size_t vertices, std::size_t triangles)
+{
+  const auto& t = field.timings();
+  std::ostream& out = tool.human_stream();
+  out << "k: " << field.number_of_neighbors() << ", rho: " << field.sampling_density()
+      << ", delta: " << field.noise_level() << ", cell: " << report.cell_size << " (lattice "
+      << report.number_of_cells[0] << " x " << report.number_of_cells[1] << " x " << report.number_of_cells[2]
+      << " cells)\n";
+  out << "time read:          " << read_seconds << " s\n"
+      << "time k-NN:          " << t.neighbors << " s\n"
+      << "time PCA:           " << t.planes << " s (" << field.number_of_trimmed_neighbourhoods()
+      << " neighbourhoods trimmed to one sheet)\n"
+      << "time orientation:   " << t.orientation << " s"
+      << (field.has_input_normals() && !field.input_normals_rejected()
+              ? std::string(" (from input normals)")
+              : " (minimum spanning forest, " + std::to_string(field.number_of_orientation_trees()) + " tree(s))")
+      << "\n"
+      << "time distance field: " << report.field_seconds << " s (" << report.field_evaluations
+      << " lattice points, " << report.undefined_points << " undefined)\n"
+      << "time contouring:    " << report.contouring_seconds << " s (" << report.visited_cubes
+      << " cubes visited, " << report.surface_cubes << " crossed, " << report.skipped_cubes
+      << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, "
+      << report.discontinuous_cubes << " skipped for a jump of f, " << report.removed_closed_components
+      << " closed pieces smaller than rho removed)\n";
+  out << "triangles: " << triangles << ", vertices: " << vertices << "\n";
+  biso_tools::Json_object& j = tool.summary();
+  j.set("k", field.number_of_neighbors());
+  j.set("rho", field.sampling_density());
+  j.set("delta", field.noise_level());
+  j.set("spacing", report.cell_size);
+  j.set_raw("cells", biso_tools::json_number_array({double(report.number_of_cells[0]),
+                                                    double(report.number_of_cells[1]),
+                                                    double(report.number_of_cells[2])}));
+  j.set("vertices", vertices);
+  j.set("faces", triangles);
+}
+
+void write_mesh(Tool& tool, const std::string& out, const std::vector<Point_3>& points,
+                const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  const biso_tools::Stopwatch watch;
+  const bool ok = biso_tools::extension(out) == "tris"
+                      ? BI::IO::write_tris(out, points, triangles)
+                      : CGAL::IO::write_polygon_soup(out, points, triangles, CGAL::parameters::stream_precision(17));
+  if(!ok)
+    throw biso_tools::File_error(out + ": cannot write");
+  tool.output(out);
+  tool.stage("write", "wrote " + out, watch.seconds());
+  tool.human_stream() << "wrote " << out << "\n";
+}
+
+int run(Tool& tool, const Options& options)
 {
   if(!options.have_input && isatty(0))
     throw Usage_error("no input file, and standard input is a terminal: give FILE, or '-' to type .pts lines "
@@ -188,154 +323,39 @@ int run(const Options& options)
     biso_tools::check_output_file(options.output);
   if(options.input == "-" && isatty(0))
     std::cerr << "contour: reading .pts lines (x y z [nx ny nz]) from the terminal; end with Ctrl-D\n";
-  {
-    auto start = std::chrono::steady_clock::now();
-    std::vector<Point_3> points;
-    std::vector<Vector_3> normals;
-    const bool has_normals = (options.input == "-") ? BI::IO::read_pts(std::cin, points, normals)
-                                                    : BI::IO::read_point_samples(options.input, points, normals);
-    const double read_seconds = seconds_since(start);
-    std::cout << "points: " << points.size() << (has_normals ? " (with normals)" : " (no normals)") << "\n";
+  const biso_tools::Stopwatch watch;
+  const Samples samples = read_samples(tool, options);
+  const double read_seconds = watch.seconds();
+  std::optional<Field> field;
+  build_field(options, samples, field);
+  report_field(tool, *field);
 
-    // Points and normals side by side for the named parameters.
-    std::vector<std::size_t> indices(points.size());
-    for(std::size_t i = 0; i < indices.size(); ++i)
-      indices[i] = i;
-    const auto point_map = CGAL::make_property_map(points);
-    const auto normal_map = CGAL::make_property_map(normals);
-    const double rho = options.rho ? *options.rho : -1.0, delta = options.delta ? *options.delta : -1.0;
-
-    std::optional<BI::Tangent_plane_signed_distance_3<K>> field_storage;
-    auto build = [&](auto&& np) -> const BI::Tangent_plane_signed_distance_3<K>& {
-      field_storage.emplace(indices, np);
-      return *field_storage;
-    };
-    // A negative rho / delta means "estimate": the class treats a negative
-    // value given explicitly as an error, so pass them only when set.
-    const auto base = BI::parameters::number_of_neighbors(options.k).point_map(point_map);
-    const BI::Tangent_plane_signed_distance_3<K>* field = nullptr;
-    if(has_normals)
-    {
-      if(options.rho && options.delta)
-        field = &build(BI::parameters::sampling_density(rho, BI::parameters::noise_level(delta, base.normal_map(normal_map))));
-      else if(options.rho)
-        field = &build(BI::parameters::sampling_density(rho, base.normal_map(normal_map)));
-      else if(options.delta)
-        field = &build(BI::parameters::noise_level(delta, base.normal_map(normal_map)));
-      else
-        field = &build(base.normal_map(normal_map));
-    }
-    else
-    {
-      if(options.rho && options.delta)
-        field = &build(BI::parameters::sampling_density(rho, BI::parameters::noise_level(delta, base)));
-      else if(options.rho)
-        field = &build(BI::parameters::sampling_density(rho, base));
-      else if(options.delta)
-        field = &build(BI::parameters::noise_level(delta, base));
-      else
-        field = &build(base);
-    }
-
-    if(field->input_normals_rejected())
-    {
-      const auto votes = field->input_normal_votes();
-      std::cerr << "warning: the input normals do not point outward (the extreme samples of " << votes.second
-                << " of " << votes.first
-                << " directions face inward); their signs are ignored and the planes are oriented as without normals\n";
-    }
-
-    std::vector<Point_3> out_points;
-    std::vector<std::array<std::size_t, 3>> triangles;
-    BI::Contouring_report report;
-    // The cell size first (it scales the jump bound), then contour.
-    double cell = field->default_cell_size();
-    if(options.cell)
-      cell = *options.cell;
-    else if(options.cells)
-    {
-      std::array<double, 3> lo{{1e300, 1e300, 1e300}}, hi{{-1e300, -1e300, -1e300}};
-      for(const Point_3& p : points)
-        for(int a = 0; a < 3; ++a)
-        {
-          lo[a] = std::min(lo[a], p[a]);
-          hi[a] = std::max(hi[a], p[a]);
-        }
-      cell = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) / *options.cells;
-    }
-    if(options.cell || options.cells)
-      check_cell_size(cell, field->default_cell_size(), points.size(), options.lattice_flag);
-    const double max_jump = options.max_jump >= 0 ? options.max_jump * cell : 3 * cell + 2 * field->noise_level();
-    report = BI::contour_signed_distance(*field, out_points, triangles,
-                                         BI::parameters::cell_size(cell, BI::parameters::maximum_jump(max_jump)));
-
-    const auto& t = field->timings();
-    std::cout << "k: " << field->number_of_neighbors() << ", rho: " << field->sampling_density()
-              << ", delta: " << field->noise_level() << ", cell: " << report.cell_size << " (lattice "
-              << report.number_of_cells[0] << " x " << report.number_of_cells[1] << " x " << report.number_of_cells[2]
-              << " cells)\n";
-    std::cout << "time read:          " << read_seconds << " s\n"
-              << "time k-NN:          " << t.neighbors << " s\n"
-              << "time PCA:           " << t.planes << " s (" << field->number_of_trimmed_neighbourhoods()
-              << " neighbourhoods trimmed to one sheet)\n"
-              << "time orientation:   " << t.orientation << " s"
-              << (field->has_input_normals() && !field->input_normals_rejected()
-                    ? std::string(" (from input normals)")
-                    : " (minimum spanning forest, " + std::to_string(field->number_of_orientation_trees()) + " tree(s))")
-              << "\n"
-              << "time distance field: " << report.field_seconds << " s (" << report.field_evaluations
-              << " lattice points, " << report.undefined_points << " undefined)\n"
-              << "time contouring:    " << report.contouring_seconds << " s (" << report.visited_cubes
-              << " cubes visited, " << report.surface_cubes << " crossed, " << report.skipped_cubes
-              << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, " << report.discontinuous_cubes << " skipped for a jump of f, "
-              << report.removed_closed_components << " closed pieces smaller than rho removed)\n";
-    std::cout << "triangles: " << triangles.size() << ", vertices: " << out_points.size() << "\n";
-    if(report.empty_output) // an empty mesh is an error, not a result
-      throw BI::Empty_contour_error(report);
-
-    if(!options.output.empty())
-    {
-      const std::string& out = options.output;
-      bool ok;
-      if(biso_tools::extension(out) == "tris")
-        ok = BI::IO::write_tris(out, out_points, triangles);
-      else
-        ok = CGAL::IO::write_polygon_soup(out, out_points, triangles, CGAL::parameters::stream_precision(17));
-      if(!ok)
-        throw biso_tools::File_error(out + ": cannot write");
-      std::cout << "wrote " << out << "\n";
-    }
-    return 0;
-  }
+  // The cell size first (it scales the jump bound), then contour.
+  const double cell = cell_size(options, samples, *field);
+  const double max_jump = options.max_jump >= 0 ? options.max_jump * cell : 3 * cell + 2 * field->noise_level();
+  std::vector<Point_3> out_points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  const BI::Contouring_report report = BI::contour_signed_distance(
+      *field, out_points, triangles, BI::parameters::cell_size(cell, BI::parameters::maximum_jump(max_jump)));
+  tool.stage("field", "evaluated the distance at " + std::to_string(report.field_evaluations) + " lattice points",
+             report.field_seconds);
+  tool.stage("contouring", "contoured " + std::to_string(triangles.size()) + " triangles", report.contouring_seconds);
+  print_report(tool, *field, report, read_seconds, out_points.size(), triangles.size());
+  if(report.empty_output) // an empty mesh is an error, not a result
+    throw BI::Empty_contour_error(report);
+  if(!options.output.empty())
+    write_mesh(tool, options.output, out_points, triangles);
+  return 0;
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-  try
-  {
-    const Options options = parse(argc, argv);
-    if(options.help)
-    {
-      std::cout << help_text;
-      return 0;
-    }
-    return run(options);
-  }
-  catch(const Usage_error& e)
-  {
-    biso_tools::print_error("contour", e.what());
-    return 2;
-  }
-  catch(const std::bad_alloc&)
-  {
-    biso_tools::print_error("contour", "out of memory (use a larger cell)");
-    return 1;
-  }
-  catch(const std::exception& e)
-  {
-    biso_tools::print_error("contour", e.what());
-    return 1;
-  }
+  Tool tool("contour", description);
+  Options options;
+  Option_text text;
+  add_options(tool, options, text);
+  return tool.run(
+      argc, argv, [&] { check_options(tool, options, text); }, [&] { return run(tool, options); });
 }

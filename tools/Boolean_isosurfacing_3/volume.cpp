@@ -10,7 +10,11 @@
 // the relative errors of both double results.  --demo writes meshes made in
 // code (some far from the origin) to DIR and runs --check on them.
 // A file that cannot be read or does not bound a solid gets one line on
-// stderr; the exit status is then 1 (2 for a usage error).
+// stderr; the exit status is then 1 (2 for a usage error).  The common
+// options of cli.h (--threads, --sequential, --json, --quiet, --version)
+// apply (doc/Boolean_isosurfacing_3/tools.md).
+
+#include "cli.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_triangle_soup.h>
@@ -28,6 +32,7 @@
 #include <CGAL/boost/graph/generators.h>
 
 #include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -47,35 +52,22 @@ typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef Epick::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 
+using biso_tools::Tool;
+
 struct Options
 {
   bool check = false;
   bool signed_volume = false;
   bool self_intersection_check = true;
+  bool parallel = true;
   std::string demo_dir;
   std::vector<std::string> files;
 };
 
-const char* const usage_text = "usage: volume [--check] [--signed] [--no-self-intersection-check] FILE...\n"
-                               "       volume --demo DIR\n";
-
-int usage(const char* message)
-{
-  std::cerr << "volume: " << message << "\n" << usage_text;
-  return 2;
-}
-
-int help()
-{
-  std::cout << "volume: the Surveyor's-formula volume of closed triangle meshes (OFF, OBJ, PLY, STL)\n"
-            << usage_text
-            << "  --check                       also print PMP::volume (Epick) and the exact (Epeck) volume\n"
-               "  --signed                      accept inward and self-intersecting surfaces (signed volume)\n"
-               "  --no-self-intersection-check  skip the O(n log n) check (the volume itself is O(n))\n"
-               "  --demo DIR                    write meshes made in code to DIR and --check them\n"
-               "Exit status: 0 on success, 1 if a file cannot be read or does not bound a solid, 2 for usage.\n";
-  return 0;
-}
+const char* const description =
+    "volume: the Surveyor's-formula volume of closed triangle meshes (OFF, OBJ, PLY, STL)\n"
+    "usage: volume [--check] [--signed] [--no-self-intersection-check] FILE...\n"
+    "       volume --demo DIR\n";
 
 double milliseconds_since(std::chrono::steady_clock::time_point start)
 {
@@ -94,8 +86,34 @@ double relative_error(double value, double reference)
   return reference == 0 ? std::abs(value) : std::abs(value - reference) / std::abs(reference);
 }
 
-bool report(const std::string& path, const Options& options)
+bool does_self_intersect(const Mesh& mesh, bool parallel)
 {
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel)
+    return PMP::does_self_intersect<CGAL::Parallel_tag>(mesh);
+#endif
+  (void)parallel;
+  return PMP::does_self_intersect<CGAL::Sequential_tag>(mesh);
+}
+
+// The JSON record of one file.
+biso_tools::Json_object file_record(const std::string& path, const BI::Triangle_soup_3& soup, double volume,
+                                    double read_ms, double ms)
+{
+  biso_tools::Json_object j;
+  j.set("input", path);
+  j.set("vertices", soup.points.size());
+  j.set("faces", soup.triangles.size());
+  j.set("volume", volume);
+  j.set("read_seconds", read_ms / 1e3);
+  j.set("volume_seconds", ms / 1e3);
+  return j;
+}
+
+bool report(Tool& tool, const std::string& path, const Options& options, std::vector<std::string>& records)
+{
+  std::FILE* out = tool.human();
+  tool.input(path);
   try
   {
     const auto start = std::chrono::steady_clock::now();
@@ -109,36 +127,48 @@ bool report(const std::string& path, const Options& options)
     const bool need_mesh = options.check || (options.self_intersection_check && !options.signed_volume);
     if(need_mesh)
       BI::IO::triangle_soup_to_mesh(soup, mesh);
-    if(options.self_intersection_check && !options.signed_volume && PMP::does_self_intersect(mesh))
+    if(options.self_intersection_check && !options.signed_volume && does_self_intersect(mesh, options.parallel))
       throw BI::Self_intersecting_mesh_error("the surface intersects itself, so its inside is not well defined "
                                              "(use --signed for the winding-number-weighted volume)");
     std::string note;
     if(soup.triangulated_polygons != 0)
       note = ", " + std::to_string(soup.triangulated_polygons) + " polygons split into triangles";
+    biso_tools::Json_object record = file_record(path, soup, volume, read_ms, ms);
+    tool.stage("measure", path + ": read and measured " + std::to_string(soup.triangles.size()) + " triangles",
+               milliseconds_since(start) / 1e3);
     if(!options.check)
     {
-      std::printf("%s: volume %.17g  (%zu triangles%s, read %.1f ms, volume %.3f ms)\n", path.c_str(), volume,
-                  soup.triangles.size(), note.c_str(), read_ms, ms);
+      std::fprintf(out, "%s: volume %.17g  (%zu triangles%s, read %.1f ms, volume %.3f ms)\n", path.c_str(), volume,
+                   soup.triangles.size(), note.c_str(), read_ms, ms);
+      records.push_back(record.str());
       return true;
     }
     const double pmp = PMP::volume(mesh);
     const double exact = exact_volume(mesh);
-    std::printf("%s: %zu triangles%s\n", path.c_str(), soup.triangles.size(), note.c_str());
-    std::printf("  surveyor_volume      %-24.17g relative error %.2e  (%.3f ms)\n", volume,
-                relative_error(volume, exact), ms);
-    std::printf("  PMP::volume (Epick)  %-24.17g relative error %.2e\n", pmp, relative_error(pmp, exact));
-    std::printf("  exact (Epeck)        %-24.17g\n", exact);
+    std::fprintf(out, "%s: %zu triangles%s\n", path.c_str(), soup.triangles.size(), note.c_str());
+    std::fprintf(out, "  surveyor_volume      %-24.17g relative error %.2e  (%.3f ms)\n", volume,
+                 relative_error(volume, exact), ms);
+    std::fprintf(out, "  PMP::volume (Epick)  %-24.17g relative error %.2e\n", pmp, relative_error(pmp, exact));
+    std::fprintf(out, "  exact (Epeck)        %-24.17g\n", exact);
+    record.set("pmp_volume", pmp);
+    record.set("exact_volume", exact);
+    records.push_back(record.str());
     return true;
   }
   catch(const BI::Invalid_input_error& e)
   {
-    std::cerr << "volume: " << path << ": " << e.what() << "\n";
+    biso_tools::print_error("volume", "error: " + path + ": " + e.what());
+    biso_tools::Json_object record;
+    record.set("input", path);
+    record.set("error", std::string(e.what()));
+    records.push_back(record.str());
     return false;
   }
 }
 
-void write_mesh(const std::string& path, const Mesh& mesh)
+void write_mesh(Tool& tool, const std::string& path, const Mesh& mesh)
 {
+  tool.output(path);
   if(!CGAL::IO::write_polygon_mesh(path, mesh, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + path);
 }
@@ -154,14 +184,11 @@ Mesh triangulated_box(const Point& low, double side)
   return mesh;
 }
 
-int run_demo(const Options& options)
+int run_demo(Tool& tool, const Options& options, std::vector<std::string>& records)
 {
   const std::string& dir = options.demo_dir;
   if(mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST)
-  {
-    std::cerr << "volume: cannot create directory " << dir << "\n";
-    return 1;
-  }
+    throw biso_tools::File_error(dir + ": cannot create the directory (" + std::strerror(errno) + ")");
   struct Shape { std::string file; std::string what; Mesh mesh; };
   std::vector<Shape> shapes;
   {
@@ -176,54 +203,63 @@ int run_demo(const Options& options)
     BI::make_torus(torus, Point(0, 0, 0), 1.0, 0.5, 256, 128);
     shapes.push_back({"torus.off", "torus R = 1, r = 0.5 (65536 triangles)", torus});
   }
-  std::printf("Surveyor's formula volumes of meshes made in code, written to %s/\n"
-              "(relative errors against the exact Epeck volume of the same double coordinates)\n\n",
-              dir.c_str());
+  std::FILE* out = tool.human();
+  std::fprintf(out, "Surveyor's formula volumes of meshes made in code, written to %s/\n"
+                    "(relative errors against the exact Epeck volume of the same double coordinates)\n\n",
+               dir.c_str());
   bool all_ok = true;
   Options check = options;
   check.check = true;
   for(const Shape& shape : shapes)
   {
     const std::string path = dir + "/" + shape.file;
-    write_mesh(path, shape.mesh);
-    std::printf("%s\n", shape.what.c_str());
-    all_ok = report(path, check) && all_ok;
-    std::printf("\n");
+    write_mesh(tool, path, shape.mesh);
+    std::fprintf(out, "%s\n", shape.what.c_str());
+    all_ok = report(tool, path, check, records) && all_ok;
+    std::fprintf(out, "\n");
   }
   return all_ok ? 0 : 1;
 }
 
 } // namespace
 
+int run(Tool& tool, const Options& options)
+{
+  std::vector<std::string> records;
+  bool all_ok = true;
+  if(!options.demo_dir.empty())
+    all_ok = run_demo(tool, options, records) == 0;
+  else
+    for(const std::string& file : options.files)
+      all_ok = report(tool, file, options, records) && all_ok;
+  std::string results = "[";
+  for(std::size_t i = 0; i < records.size(); ++i)
+    results += (i ? ", " : "") + records[i];
+  tool.summary().set_raw("results", results + "]");
+  return all_ok ? 0 : 1;
+}
+
 int main(int argc, char** argv)
 {
+  Tool tool("volume", description);
   Options options;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--check") options.check = true;
-    else if(arg == "--signed") options.signed_volume = true;
-    else if(arg == "--no-self-intersection-check") options.self_intersection_check = false;
-    else if(arg == "--demo")
-    {
-      if(i + 1 >= argc) return usage("--demo needs a directory");
-      options.demo_dir = argv[++i];
-    }
-    else if(arg == "-h" || arg == "--help") return help();
-    else if(!arg.empty() && arg[0] == '-') return usage(("unknown option " + arg).c_str());
-    else options.files.push_back(arg);
-  }
-  try
-  {
-    if(!options.demo_dir.empty()) return run_demo(options);
-    if(options.files.empty()) return usage("no input file");
-    bool all_ok = true;
-    for(const std::string& file : options.files) all_ok = report(file, options) && all_ok;
-    return all_ok ? 0 : 1;
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "volume: " << e.what() << "\n";
-    return 1;
-  }
+  CLI::App& app = tool.app();
+  app.add_flag("--check", options.check, "also print PMP::volume (Epick) and the exact (Epeck) volume");
+  app.add_flag("--signed", options.signed_volume, "accept inward and self-intersecting surfaces (signed volume)");
+  app.add_flag("--no-self-intersection-check", "skip the O(n log n) check (the volume itself is O(n))");
+  app.add_option("--demo", options.demo_dir, "write meshes made in code to DIR and --check them")->type_name("DIR");
+  return tool.run(
+      argc, argv,
+      [&] {
+        options.files = tool.positionals();
+        options.self_intersection_check = app.count("--no-self-intersection-check") == 0;
+        options.parallel = tool.parallel();
+        if(app.count("--demo") && options.demo_dir.empty())
+          throw biso_tools::Usage_error("--demo needs a directory, got an empty argument");
+        if(options.demo_dir.empty() && options.files.empty())
+          throw biso_tools::Usage_error("no input file (volume --help for usage)");
+        if(!options.demo_dir.empty() && !options.files.empty())
+          throw biso_tools::Usage_error("--demo takes a directory, no input file");
+      },
+      [&] { return run(tool, options); });
 }
