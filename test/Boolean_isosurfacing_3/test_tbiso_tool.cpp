@@ -223,7 +223,9 @@ TEST_F(TbisoTool, UnwritableOutputIsRefusedBeforeComputing)
   {
     std::filesystem::create_directory(file("dir.ply"));
     const auto start = std::chrono::steady_clock::now();
-    const Result r = run("--cells 256 --field sphere:0,0,0,0.5 --smooth 50 -o " + file("ok.ply") + " " + flag);
+    // A good -o besides an unwritable --creases or --corners (-o is given once).
+    const std::string ok = flag.rfind("-o ", 0) == 0 ? "" : " -o " + file("ok.ply");
+    const Result r = run("--cells 256 --field sphere:0,0,0,0.5 --smooth 50" + ok + " " + flag);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(r.status, 1) << flag;
     EXPECT_TRUE(r.out.empty()) << flag << "\n" << r.out;
@@ -364,7 +366,8 @@ TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
   }
   // Analytic fields out of core: evaluated slab by slab, the in-core surface.
   {
-    const Result r = run("--cells 20" + demo_fields() + expression + " --out-of-core -o " + file("ooc_analytic.ply"));
+    // demo_fields() has the expression: only --close added (an option is given once).
+    const Result r = run("--cells 20" + demo_fields() + " --close --out-of-core -o " + file("ooc_analytic.ply"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("evaluated slab by slab"), std::string::npos) << r.out;
     const Soup streamed = read_ply(file("ooc_analytic.ply"));
@@ -564,7 +567,7 @@ TEST_F(TbisoTool, SmoothingANonManifoldSurfaceFails)
   // XOR of two overlapping balls: four sheets meet along the circle where
   // the spheres cross.
   const Result r = run("--cells 16 --field sphere:0.2,0,0,0.5 --field sphere:-0.2,0,0,0.5 "
-                       "--expr \"f0 & !f1 | !f0 & f1\" --smooth");
+                       "--expr \"f0 & !f1 | !f0 & f1\" --smooth --quiet");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("non-manifold"), std::string::npos) << r.err;
@@ -638,7 +641,11 @@ TEST_F(TbisoTool, ErrorsGiveOneLineAndTheRightExitCode)
       {"", 2, "nothing to do"},
       {"--cells 8 --frobnicate" + sphere, 2, "unknown option"},
       {"--cells 8" + sphere + " --expr", 2, "needs a value"},
-      {"--cells 8x" + sphere, 2, "not a whole number"},
+      {"--cells 8x" + sphere, 2, "not a number"},
+      {"--cells 8.5" + sphere, 2, "not a whole number"},
+      {"--cells 8 --cells 9" + sphere, 2, "more than once"},
+      {"--cells 8 --spacing 0.1" + sphere, 2, "only one"},
+      {"--cells 8,8" + sphere, 2, "NX,NY,NZ"},
       {"--cells 0" + sphere, 2, "at least 1"},
       {"--cells 8 --field sphere:0,0,0,abc", 2, "not a finite number"},
       {"--cells 8 --field sphere:0,0,0", 2, "expected 4"},
@@ -762,6 +769,36 @@ TEST(BooleanIsosurfaceToMesh, NonManifoldSurfaceIsRefused)
     EXPECT_NE(std::string(e.what()).find("soup"), std::string::npos) << e.what();
   }
   EXPECT_EQ(mesh.number_of_faces(), 0u);
+}
+
+} // namespace
+
+namespace {
+
+class TbisoLattice : public TbisoTool
+{};
+
+// --cells N (cells), --spacing h and the old --grid N+1 (vertices) name the
+// same grid on the default box; on a flat box --cells N is along the
+// longest side, the other axes in proportion.
+TEST_F(TbisoLattice, CellsSpacingAndTheOldGridFlagAgree)
+{
+  const std::string fields = " --field sphere:0.1,0,0,0.6 --field plane:0,1,1,0.2 --expr \"f0 & !f1\" --quiet";
+  ASSERT_EQ(run("--cells 16" + fields + " -o " + file("cells.ply")).status, 0);
+  ASSERT_EQ(run("--spacing 0.125" + fields + " -o " + file("spacing.ply")).status, 0);
+  ASSERT_EQ(run("--grid 17" + fields + " -o " + file("grid.ply")).status, 0);
+  ASSERT_EQ(run("--cells 16,16,16" + fields + " -o " + file("axes.ply")).status, 0);
+  const std::string cells = slurp(file("cells.ply"));
+  EXPECT_GT(cells.size(), 1000u);
+  EXPECT_TRUE(slurp(file("spacing.ply")) == cells);
+  EXPECT_TRUE(slurp(file("grid.ply")) == cells);
+  EXPECT_TRUE(slurp(file("axes.ply")) == cells);
+  const Result flat = run("--cells 20 --box -1,-1,-0.25,1,1,0.25 --field sphere:0,0,0,0.6");
+  ASSERT_EQ(flat.status, 0) << flat.err;
+  EXPECT_NE(flat.out.find("grid 21 x 21 x 6 vertices"), std::string::npos) << flat.out;
+  const Result fine = run("--spacing 0.3 --box -1,-1,-0.25,1,1,0.25 --field sphere:0,0,0,0.6");
+  EXPECT_NE(fine.out.find("grid 8 x 8 x 3 vertices"), std::string::npos) << fine.out; // ceil(2/0.3) = 7 cells
+  EXPECT_EQ(run("--help").out.find("--grid"), std::string::npos) << "the old flag is hidden";
 }
 
 } // namespace

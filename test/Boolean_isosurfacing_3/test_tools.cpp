@@ -72,19 +72,25 @@ protected:
 class VolumeTool : public Tool
 {
 protected:
-  Result run(const std::string& arguments) { return run_tool(BISO_VOLUME_TOOL, arguments); }
+  // --quiet: these tests check the messages, not the progress lines (see
+  // Tool.ProgressLinesNameTheStageAndAreSilencedByQuiet).
+  Result run(const std::string& arguments) { return run_tool(BISO_VOLUME_TOOL, "--quiet " + arguments); }
 };
 
 class CsgTool : public Tool
 {
 protected:
-  Result run(const std::string& arguments) { return run_tool(BISO_CSG_TOOL, arguments); }
+  // --quiet: these tests check the messages, not the progress lines (see
+  // Tool.ProgressLinesNameTheStageAndAreSilencedByQuiet).
+  Result run(const std::string& arguments) { return run_tool(BISO_CSG_TOOL, "--quiet " + arguments); }
 };
 
 class ContourTool : public Tool
 {
 protected:
-  Result run(const std::string& arguments) { return run_tool(BISO_CONTOUR_TOOL, arguments); }
+  // --quiet: these tests check the messages, not the progress lines (see
+  // Tool.ProgressLinesNameTheStageAndAreSilencedByQuiet).
+  Result run(const std::string& arguments) { return run_tool(BISO_CONTOUR_TOOL, "--quiet " + arguments); }
 };
 
 // Whether `s` prints on one terminal line: no control byte, no DEL, no byte
@@ -1073,4 +1079,17 @@ TEST_F(Tool, EveryMeshFormatReadsBackWithTheReportedFaces)
     EXPECT_TRUE(is_one_clean_line(r.err)) << r.err;
     EXPECT_NE(r.err.find("extension"), std::string::npos) << r.err;
   }
+}
+
+// File names with quotes, backslashes and control bytes still give valid
+// JSON (escaped, and the control bytes shown as \xNN as on stderr).
+TEST_F(Tool, JsonEscapesStrangeFileNames)
+{
+  const std::string name = write("q\"uo\\te\x01.off", tetrahedron_off);
+  const Result r = run_tool(BISO_VOLUME_TOOL, "'" + name + "' --json --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ofstream(m_dir + "/s.json") << r.out;
+  const std::string members = json_members(m_dir + "/s.json");
+  EXPECT_NE(members.find("inputs=[1]"), std::string::npos) << members << r.out;
+  EXPECT_NE(r.out.find("q\\\"uo\\\\te\\\\x01.off"), std::string::npos) << r.out;
 }

@@ -91,20 +91,25 @@ public:
   /// Where the human summary goes: stdout, or nowhere under --json.
   std::FILE* human()
   {
-    if(!m_json)
+    if(!m_json && m_root)
       return stdout;
     if(m_null == nullptr)
       m_null = std::fopen("/dev/null", "w");
     return m_null;
   }
-  std::ostream& human_stream() { return m_json ? m_null_stream : std::cout; }
+  std::ostream& human_stream() { return m_json || !m_root ? m_null_stream : std::cout; }
+
+  /// Under MPI, only the root rank reports (summary, progress, warnings,
+  /// errors, JSON); the other ranks run silently.
+  void set_root(bool root) { m_root = root; }
+  bool root() const { return m_root; }
 
   /// A stage that ended: "<tool>: <what> in <seconds> s" on stderr, and its
   /// time in the JSON summary under times.<key>.
   void stage(const std::string& key, const std::string& what, double seconds)
   {
     m_times.set(key, seconds);
-    if(!m_quiet)
+    if(!m_quiet && m_root)
       std::fprintf(stderr, "%s: %s in %.3g s\n", m_name, printable(what).c_str(), seconds);
   }
   /// A time without a progress line (sub-stages the library reports).
@@ -114,13 +119,14 @@ public:
   void warning(const std::string& text)
   {
     m_warnings.push_back(text);
-    print_error(m_name, "warning: " + text);
+    if(m_root)
+      print_error(m_name, "warning: " + text);
   }
-  /// "<tool>: note: <text>" on stderr unless --quiet, and in the JSON notes.
+  /// "<tool>: note: <text>" on stderr (always), and in the JSON notes.
   void note(const std::string& text)
   {
     m_notes.push_back(text);
-    if(!m_quiet)
+    if(m_root)
       print_error(m_name, "note: " + text);
   }
   void input(const std::string& path) { m_inputs.push_back(path); }
@@ -143,7 +149,7 @@ public:
       catch(const CLI::ParseError& e)
       {
         if(e.get_exit_code() == 0) // --help, --version
-          return m_app.exit(e);
+          return m_root ? m_app.exit(e) : 0;
         throw Usage_error(flatten(e));
       }
       check_repetitions();
@@ -157,23 +163,23 @@ public:
         limit.emplace(tbb::global_control::max_allowed_parallelism, sequential() ? 1 : m_threads);
 #endif
       const int status = body();
-      if(m_json) // also for a run that failed on some inputs (volume), or --strict
+      if(m_json && m_root) // also for a run that failed on some inputs (volume), or --strict
         print_json();
       return status;
     }
     catch(const Usage_error& e)
     {
-      print_error(m_name, std::string("error: ") + e.what());
+      error(e.what());
       return 2;
     }
     catch(const std::bad_alloc&)
     {
-      print_error(m_name, "error: out of memory (use a coarser lattice)");
+      error("out of memory (use a coarser lattice)");
       return 1;
     }
     catch(const std::exception& e)
     {
-      print_error(m_name, std::string("error: ") + e.what());
+      error(e.what());
       return 1;
     }
   }
@@ -186,6 +192,13 @@ public:
   {
     if(m_null != nullptr)
       std::fclose(m_null);
+  }
+
+  /// "<tool>: error: <text>" on stderr (the root rank only).
+  void error(const std::string& text) const
+  {
+    if(m_root)
+      print_error(m_name, "error: " + text);
   }
 
 private:
@@ -243,7 +256,7 @@ private:
   CLI::App m_app;
   std::string m_threads_text;
   std::size_t m_threads = 0;
-  bool m_sequential = false, m_json = false, m_quiet = false;
+  bool m_sequential = false, m_json = false, m_quiet = false, m_root = true;
   std::set<std::string> m_repeatable;
   std::vector<std::string> m_positionals, m_inputs, m_outputs, m_warnings, m_notes;
   Json_object m_summary, m_times;
