@@ -44,6 +44,11 @@ using tbiso_tool::Options;
 // distributed run is out of core) and what --distributed does not do.
 void check_distributed_options(biso_tools::Tool& tool, Options& o, const tbiso_tool::Option_text& t)
 {
+  const CLI::App& app = tool.app();
+  if(biso_tools::extension(o.output) != "ply")
+    throw Usage_error("--distributed writes a binary PLY file: give -o OUT.ply");
+  if(app.count("--cells") + app.count("--spacing") + app.count("--grid") == 0)
+    throw Usage_error("--distributed needs a grid: --cells N, --cells NX,NY,NZ or --spacing h");
   o.out_of_core = true;
   tbiso_tool::check_options(tool, o, t);
   if(!o.demo_dir.empty() || !o.mesh_file.empty())
@@ -53,14 +58,13 @@ void check_distributed_options(biso_tools::Tool& tool, Options& o, const tbiso_t
   if(!o.slab_layers)
     o.slab_layers = 8;
   // One thread per rank unless --threads.
-  o.parallel = tool.app().count("--threads") > 0 && tool.parallel();
+  o.parallel = app.count("--threads") > 0 && tool.parallel();
 }
 
 // One line per rank, gathered on rank 0.
-void report_ranks(biso_tools::Tool& tool, const Options& o, const BI::Boolean_isosurface_distributed_statistics& s,
+void report_ranks(biso_tools::Tool& tool, const BI::Boolean_isosurface_distributed_statistics& s,
                   double field_seconds, double field_megabytes, const Ranks& ranks)
 {
-  (void)o;
   const biso_tools::mpi::Rank_table table = biso_tools::mpi::gather_on_root(
       {"first_layer", "last_layer", "vertices", "polygons", "extraction_seconds", "reading_seconds",
        "welding_seconds", "writing_seconds", "read_megabytes", "sent_kilobytes", "field_megabytes",
@@ -156,7 +160,7 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
 
   tool.stage("extraction", "extracted, welded and wrote " + std::to_string(s.number_of_polygons) + " polygons",
              total);
-  report_ranks(tool, o, s, field_seconds, field_megabytes, ranks);
+  report_ranks(tool, s, field_seconds, field_megabytes, ranks);
   std::fprintf(out, "time total:      %.3f s (slowest extraction %.3f s)\n", total, s.max_extraction_seconds);
   std::fprintf(out, "output:     %zu vertices, %zu polygons (%zu tetrahedra evaluated)\n", s.number_of_vertices,
                s.number_of_polygons, s.number_of_evaluated_tetrahedra);
