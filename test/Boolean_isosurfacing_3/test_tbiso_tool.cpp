@@ -388,21 +388,22 @@ TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
     EXPECT_EQ(streamed.points.size(), in_core_soup.points.size());
     EXPECT_TRUE(shapes(streamed) == shapes(in_core_soup));
   }
-  // Its own errors.
+  // Its own errors: command lines it cannot run, usage errors (exit 2).
   const std::pair<std::string, const char*> errors[] = {
       {"--cells 20 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o x.off", "OUT.ply"},
       {"--cells 20 --fields " + file("f.f64") + expression + " --out-of-core -o x.ply", "--field-count"},
       {"--cells 20 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o " +
            file("x.ply") + " --creases c.txt", "whole surface"},
-      {"--cells 20 --fields " + file("f.f64") + " --field-count 4" + demo_fields() + expression + " --out-of-core -o " +
+      {"--cells 20 --fields " + file("f.f64") + " --field-count 4" + demo_fields() + " --close --out-of-core -o " +
            file("x.ply"), "not both"},
-      {"--cells 20" + demo_fields() + " --field-count 4" + expression + " --out-of-core -o " + file("x.ply"),
+      {"--cells 20" + demo_fields() + " --field-count 4 --close --out-of-core -o " + file("x.ply"),
        "--field-count is for"},
       {"--cells 20 --fields " + file("f.f64") + " --field-count 4 --slab-size 0" + expression, "at least 1"}};
   for(const auto& e : errors)
   {
     const Result r = run(e.first);
-    EXPECT_EQ(r.status, 1) << e.first;
+    EXPECT_EQ(r.status, 2) << e.first;
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(e.second), std::string::npos) << e.first << "\n" << r.err;
   }
 }
