@@ -34,6 +34,7 @@
 #include <set>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #ifndef BISO_VERSION
 #  define BISO_VERSION "unknown"
@@ -52,6 +53,28 @@ private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
+/// A progress bar on stderr (the library's `progress` callback), only for
+/// runs that last, only on a terminal, and not under --quiet.
+class Progress_bar
+{
+public:
+  explicit Progress_bar(bool quiet) : m_quiet(quiet) {}
+  void operator()(double fraction) const
+  {
+    if(m_quiet || m_watch.seconds() < 1.0 || !isatty(2))
+      return;
+    const int width = 40, done = int(fraction * width + 0.5);
+    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(done, '#').c_str(), std::string(width - done, ' ').c_str(),
+                 int(fraction * 100 + 0.5));
+    if(fraction >= 1.0)
+      std::fprintf(stderr, "\r%*s\r", width + 8, "");
+  }
+
+private:
+  bool m_quiet;
+  Stopwatch m_watch;
+};
+
 /// One tool's command line, its common options, its reporting channels.
 class Tool
 {
@@ -65,13 +88,11 @@ public:
     m_app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     m_app.allow_extras(true);
     m_app.get_formatter()->column_width(30);
-    CLI::Option* threads = m_app.add_option("--threads", m_threads_text, "use at most N threads (TBB)")
-                               ->type_name("N")
-                               ->group("Common options");
-    CLI::Option* sequential =
-        m_app.add_flag("--sequential", m_sequential, "run on one thread (the same output as a parallel run)")
-            ->group("Common options");
-    threads->excludes(sequential);
+    m_app.add_option("--threads", m_threads_text, "use at most N threads (TBB)")
+        ->type_name("N")
+        ->group("Common options");
+    m_app.add_flag("--sequential", m_sequential, "run on one thread (the same output as a parallel run)")
+        ->group("Common options");
     m_app.add_flag("--json", m_json, "print a JSON summary on stdout instead of the human one")
         ->group("Common options");
     m_app.add_flag("--quiet", m_quiet, "no progress lines on stderr")->group("Common options");
@@ -154,7 +175,9 @@ public:
       }
       check_repetitions();
       check_extras();
-      if(!m_threads_text.empty())
+      if(m_app.count("--threads") && m_sequential)
+        throw Usage_error("--threads and --sequential are exclusive");
+      if(m_app.count("--threads"))
         m_threads = parse_count("--threads", m_threads_text, 1, 4096, "a sane thread count");
       check();
 #ifdef CGAL_LINKED_WITH_TBB

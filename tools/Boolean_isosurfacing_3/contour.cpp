@@ -146,11 +146,6 @@ void check_options(Tool& tool, Options& o, const Option_text& t)
     throw Usage_error(spacing_name + " and --cells are exclusive");
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 // Refuses a cell so much finer than the samples that the output would not
 // fit: a surface of area S crosses about 1.5 S / r^2 cubes (1.5: the mean
 // of |nx| + |ny| + |nz| over the unit normals), and the samples' area is

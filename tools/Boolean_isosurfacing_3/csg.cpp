@@ -61,25 +61,7 @@ typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef Epick::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 
-// A progress bar on stderr, only for runs that last and only on a terminal.
-class Progress_bar
-{
-public:
-  explicit Progress_bar(bool quiet) : m_quiet(quiet) {}
-  void operator()(double fraction) const
-  {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    if(m_quiet || seconds < 1.0 || !isatty(2)) return;
-    const int width = 40, done = int(fraction * width + 0.5);
-    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(done, '#').c_str(), std::string(width - done, ' ').c_str(),
-                 int(fraction * 100 + 0.5));
-    if(fraction >= 1.0) std::fprintf(stderr, "\r%*s\r", width + 8, "");
-  }
-
-private:
-  bool m_quiet;
-  std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
-};
+using biso_tools::Progress_bar;
 
 // `expression & X`, X a new last variable: the result clipped to the solid X.
 BI::Boolean_expression and_with_new_variable(const BI::Boolean_expression& expression)

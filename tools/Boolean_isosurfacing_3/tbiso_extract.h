@@ -1,6 +1,6 @@
 // tbiso's extraction: in core (the whole fields in memory) or out of core
 // (the fields read or evaluated slab by slab, the surface streamed to a PLY
-// file), with a progress bar on a terminal.
+// file), with cli.h's progress bar on a terminal.
 
 #ifndef BISO_TOOLS_TBISO_EXTRACT_H
 #define BISO_TOOLS_TBISO_EXTRACT_H
@@ -11,36 +11,14 @@
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_by_slabs.h>
 
-#include <chrono>
 #include <cstdio>
 #include <string>
-#include <unistd.h>
 
 namespace tbiso_tool {
 
 typedef BI::Boolean_isosurface_soup<Point> Soup;
 
-// A progress bar on stderr, only for runs that last, only on a terminal,
-// and not under --quiet.
-class Progress_bar
-{
-public:
-  explicit Progress_bar(bool quiet) : m_quiet(quiet) {}
-  void operator()(double fraction) const
-  {
-    if(m_quiet || m_watch.seconds() < 1.0 || !isatty(2))
-      return;
-    const int width = 40, done = int(fraction * width + 0.5);
-    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(done, '#').c_str(), std::string(width - done, ' ').c_str(),
-                 int(fraction * 100 + 0.5));
-    if(fraction >= 1.0)
-      std::fprintf(stderr, "\r%*s\r", width + 8, "");
-  }
-
-private:
-  bool m_quiet;
-  biso_tools::Stopwatch m_watch;
-};
+using biso_tools::Progress_bar;
 
 template <typename Domain>
 BI::Boolean_isosurface_statistics extract(const Domain& domain, const BI::Scalar_fields& fields,

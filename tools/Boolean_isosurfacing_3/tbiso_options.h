@@ -49,7 +49,7 @@ const char* const description =
     "tbiso: the boundary of the regularized Boolean set EXPR(f0, f1, ...) where the literal fi is the region\n"
     "f_i < 0, for scalar fields sampled at the vertices of a tetrahedral domain (TBISO), with its crease\n"
     "polylines and corners.\n"
-    "usage: tbiso (--cells N | --cells NX,NY,NZ | --spacing h) [--box X0,Y0,Z0,X1,Y1,Z1] | --mesh FILE)\n"
+    "usage: tbiso ((--cells N | --cells NX,NY,NZ | --spacing h) [--box X0,Y0,Z0,X1,Y1,Z1] | --mesh FILE)\n"
     "             (--fields FILE [--field-count N] | --field SPEC [--field SPEC ...])\n"
     "             [--expr TEXT] [--close] [--smooth [ITER] [--lambda L] [--mu M]]\n"
     "             [-o OUT.ply|.off|.obj|.stl] [--creases FILE] [--corners FILE] [--slab-size LAYERS] [--out-of-core]\n"

@@ -69,11 +69,6 @@ const char* const description =
     "usage: volume [--check] [--signed] [--no-self-intersection-check] FILE...\n"
     "       volume --demo DIR\n";
 
-double milliseconds_since(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 double exact_volume(const Mesh& mesh)
 {
   CGAL::Surface_mesh<Epeck::Point_3> exact_mesh;
@@ -116,13 +111,13 @@ bool report(Tool& tool, const std::string& path, const Options& options, std::ve
   tool.input(path);
   try
   {
-    const auto start = std::chrono::steady_clock::now();
+    const biso_tools::Stopwatch watch;
     const BI::Triangle_soup_3 soup = BI::IO::read_triangle_soup(path);
-    const double read_ms = milliseconds_since(start);
-    const auto volume_start = std::chrono::steady_clock::now();
+    const double read_ms = watch.seconds() * 1e3;
+    const biso_tools::Stopwatch volume_watch;
     // Validates the soup (closed, oriented, finite) as it computes.
     const double volume = BI::surveyor_volume(soup, BI::parameters::signed_volume(options.signed_volume));
-    const double ms = milliseconds_since(volume_start);
+    const double ms = volume_watch.seconds() * 1e3;
     Mesh mesh;
     const bool need_mesh = options.check || (options.self_intersection_check && !options.signed_volume);
     if(need_mesh)
@@ -135,7 +130,7 @@ bool report(Tool& tool, const std::string& path, const Options& options, std::ve
       note = ", " + std::to_string(soup.triangulated_polygons) + " polygons split into triangles";
     biso_tools::Json_object record = file_record(path, soup, volume, read_ms, ms);
     tool.stage("measure", path + ": read and measured " + std::to_string(soup.triangles.size()) + " triangles",
-               milliseconds_since(start) / 1e3);
+               watch.seconds());
     if(!options.check)
     {
       std::fprintf(out, "%s: volume %.17g  (%zu triangles%s, read %.1f ms, volume %.3f ms)\n", path.c_str(), volume,
