@@ -11,8 +11,8 @@ cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build --target csg volume tbiso -j "$(nproc)" >> build.log 2>&1 || { cat build.log; exit 1; }
-./build/examples/Boolean_isosurfacing_3/csg --demo demo_output
+./build/tools/Boolean_isosurfacing_3/csg --demo demo_output
 echo
-./build/examples/Boolean_isosurfacing_3/volume --demo demo_output/volume
+./build/tools/Boolean_isosurfacing_3/volume --demo demo_output/volume
 echo
-./build/examples/Boolean_isosurfacing_3/tbiso --demo demo_output/tbiso
+./build/tools/Boolean_isosurfacing_3/tbiso --demo demo_output/tbiso

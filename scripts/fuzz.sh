@@ -24,7 +24,7 @@ targets="${BISO_FUZZ_TARGETS:-$all_targets}"
 mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Debug -DBISO_BUILD_FUZZERS=ON \
       -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE \
-      -DBISO_BUILD_TESTS=OFF -DBISO_BUILD_EXAMPLES=OFF -DBISO_BUILD_BENCHMARKS=OFF > "$build/configure.log" 2>&1 \
+      -DBISO_BUILD_TESTS=OFF -DBISO_BUILD_EXAMPLES=OFF -DBISO_BUILD_TOOLS=OFF -DBISO_BUILD_BENCHMARKS=OFF > "$build/configure.log" 2>&1 \
   || { cat "$build/configure.log"; exit 1; }
 # shellcheck disable=SC2086
 cmake --build "$build" --target $targets -j "$(nproc)"

@@ -17,7 +17,7 @@ if [[ $# -lt 1 ]]; then
 fi
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(dirname "$here")"
-tools="$(cd "$1" && pwd)/examples/Boolean_isosurfacing_3"
+tools="$(cd "$1" && pwd)/tools/Boolean_isosurfacing_3"
 work="${2:-$(mktemp -d)}"
 mkdir -p "$work"
 fig="$root/doc/Boolean_isosurfacing_3/fig"
@@ -175,7 +175,7 @@ noise = np.random.default_rng(3).uniform(-0.3 * h, 0.3 * h, size=x.shape)
 f0 = np.sqrt(x * x + y * y + z * z) - 0.8 + noise
 np.stack([f0, z - 0.35, x - 0.4], axis=-1).astype("<f8").tofile(sys.argv[1])
 EOF
-fields=(--grid 48 --fields "$work/noisy.f64" --field-count 3 --expr "f0 & f1 & f2")
+fields=(--cells 47 --fields "$work/noisy.f64" --field-count 3 --expr "f0 & f1 & f2")
 "$tools/tbiso" "${fields[@]}" -o "$work/raw.ply" --creases "$work/raw_creases.txt" --corners "$work/raw_corners.xyz"
 "$tools/tbiso" "${fields[@]}" --smooth 20 -o "$work/smooth.ply" \
   --creases "$work/smooth_creases.txt" --corners "$work/smooth_corners.xyz"

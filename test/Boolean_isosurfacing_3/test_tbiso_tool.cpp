@@ -223,7 +223,9 @@ TEST_F(TbisoTool, UnwritableOutputIsRefusedBeforeComputing)
   {
     std::filesystem::create_directory(file("dir.ply"));
     const auto start = std::chrono::steady_clock::now();
-    const Result r = run("--grid 257 --field sphere:0,0,0,0.5 --smooth 50 -o " + file("ok.ply") + " " + flag);
+    // A good -o besides an unwritable --creases or --corners (-o is given once).
+    const std::string ok = flag.rfind("-o ", 0) == 0 ? "" : " -o " + file("ok.ply");
+    const Result r = run("--cells 256 --field sphere:0,0,0,0.5 --smooth 50" + ok + " " + flag);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(r.status, 1) << flag;
     EXPECT_TRUE(r.out.empty()) << flag << "\n" << r.out;
@@ -240,7 +242,7 @@ TEST_F(TbisoTool, UnwritableOutputIsRefusedBeforeComputing)
 // is exact and so is the volume, 1.5 * 1.25 * 1.75.
 TEST_F(TbisoTool, BoxOnGridPlanesHasTheExactVolume)
 {
-  const Result r = run("--grid 9 --field box:-0.5,-0.25,-0.75,2,2,2 --close -o " + file("box.ply"));
+  const Result r = run("--cells 8 --field box:-0.5,-0.25,-0.75,2,2,2 --close -o " + file("box.ply"));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NEAR(number_after(r.out, "volume "), 1.5 * 1.25 * 1.75, 1e-9) << r.out;
   const Soup soup = read_ply(file("box.ply"));
@@ -252,7 +254,7 @@ TEST_F(TbisoTool, BoxOnGridPlanesHasTheExactVolume)
   // triangulation some tetrahedra have their four corners on the box surface.
   // The field is identically zero on them, so the regularized set leaves
   // them out and the edges are chamfered (by less than a cell).
-  const Result inner = run("--grid 9 --field box:-0.5,-0.25,-0.75,0.75,0.5,0.25");
+  const Result inner = run("--cells 8 --field box:-0.5,-0.25,-0.75,0.75,0.5,0.25");
   ASSERT_EQ(inner.status, 0) << inner.err;
   const double exact = 1.25 * 0.75 * 1;
   EXPECT_LT(number_after(inner.out, "volume "), exact) << inner.out;
@@ -262,7 +264,7 @@ TEST_F(TbisoTool, BoxOnGridPlanesHasTheExactVolume)
 TEST_F(TbisoTool, CylinderAndTorusFields)
 {
   // A cylinder along y, centre (x, z) = (0.3, -0.2), radius 0.4, closed at y = +-1.
-  const Result c = run("--grid 33 --field cylinder:y,0.3,-0.2,0.4 --close -o " + file("c.ply"));
+  const Result c = run("--cells 32 --field cylinder:y,0.3,-0.2,0.4 --close -o " + file("c.ply"));
   ASSERT_EQ(c.status, 0) << c.err;
   EXPECT_NEAR(number_after(c.out, "volume "), pi * 0.16 * 2, 0.02 * pi * 0.16 * 2) << c.out;
   const Soup soup = read_ply(file("c.ply"));
@@ -276,7 +278,7 @@ TEST_F(TbisoTool, CylinderAndTorusFields)
   EXPECT_NEAR(box.zmin(), -0.6, 0.01);
   EXPECT_NEAR(box.zmax(), 0.2, 0.01);
 
-  const Result t = run("--grid 41 --field torus:0.6,0.25");
+  const Result t = run("--cells 40 --field torus:0.6,0.25");
   ASSERT_EQ(t.status, 0) << t.err;
   const double torus = 2 * pi * pi * 0.6 * 0.25 * 0.25;
   EXPECT_NEAR(number_after(t.out, "volume "), torus, 0.03 * torus) << t.out;
@@ -293,14 +295,14 @@ TEST_F(TbisoTool, FieldFilesTextAndRaw)
         values.push_back(-1 + 0.5 * i - 0.25);
   for(double v : values)
     text += std::to_string(v) + "\n";
-  const Result r = run("--grid 5 --close --fields " + write("f.txt", text));
+  const Result r = run("--cells 4 --close --fields " + write("f.txt", text));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NEAR(number_after(r.out, "volume "), 1.25 * 4, 1e-12) << r.out;
 
   std::ofstream raw(file("f.f64"), std::ios::binary);
   raw.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(double)));
   raw.close();
-  const Result b = run("--grid 5 --close --fields " + file("f.f64") + " --field-count 1");
+  const Result b = run("--cells 4 --close --fields " + file("f.f64") + " --field-count 1");
   ASSERT_EQ(b.status, 0) << b.err;
   EXPECT_NEAR(number_after(b.out, "volume "), 1.25 * 4, 1e-12) << b.out;
 }
@@ -309,7 +311,7 @@ TEST_F(TbisoTool, FieldFilesTextAndRaw)
 // same surface as the in-core run, whatever the slab size.
 TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
 {
-  const Result in_core = run("--grid 21" + demo_fields() + " --close -o " + file("in_core.ply"));
+  const Result in_core = run("--cells 20" + demo_fields() + " --close -o " + file("in_core.ply"));
   ASSERT_EQ(in_core.status, 0) << in_core.err;
   // The same fields as a raw float64 file (the tool samples in double).
   const double a = 0.45 / std::sqrt(3.0);
@@ -328,14 +330,14 @@ TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
   raw.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(double)));
   raw.close();
   const std::string expression = " --expr \"f0&f1 | f0&f2 | f0&f3 | f1&f2 | f1&f3 | f2&f3\" --close";
-  const Result from_file = run("--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression +
+  const Result from_file = run("--cells 20 --fields " + file("f.f64") + " --field-count 4" + expression +
                                " -o " + file("from_file.ply"));
   ASSERT_EQ(from_file.status, 0) << from_file.err;
   const Soup reference = read_ply(file("from_file.ply"));
   EXPECT_GT(reference.polygons.size(), 100u);
   for(const char* slab : {"1", "3", "8"})
   {
-    const Result r = run("--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression +
+    const Result r = run("--cells 20 --fields " + file("f.f64") + " --field-count 4" + expression +
                          " --out-of-core --slab-size " + slab + " -o " + file("ooc.ply"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("peak resident"), std::string::npos) << r.out;
@@ -364,7 +366,8 @@ TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
   }
   // Analytic fields out of core: evaluated slab by slab, the in-core surface.
   {
-    const Result r = run("--grid 21" + demo_fields() + expression + " --out-of-core -o " + file("ooc_analytic.ply"));
+    // demo_fields() has the expression: only --close added (an option is given once).
+    const Result r = run("--cells 20" + demo_fields() + " --close --out-of-core -o " + file("ooc_analytic.ply"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("evaluated slab by slab"), std::string::npos) << r.out;
     const Soup streamed = read_ply(file("ooc_analytic.ply"));
@@ -385,21 +388,22 @@ TEST_F(TbisoTool, OutOfCoreGivesTheInCoreSurface)
     EXPECT_EQ(streamed.points.size(), in_core_soup.points.size());
     EXPECT_TRUE(shapes(streamed) == shapes(in_core_soup));
   }
-  // Its own errors.
+  // Its own errors: command lines it cannot run, usage errors (exit 2).
   const std::pair<std::string, const char*> errors[] = {
-      {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o x.off", "OUT.ply"},
-      {"--grid 21 --fields " + file("f.f64") + expression + " --out-of-core -o x.ply", "--field-count"},
-      {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o " +
+      {"--cells 20 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o x.off", "OUT.ply"},
+      {"--cells 20 --fields " + file("f.f64") + expression + " --out-of-core -o x.ply", "--field-count"},
+      {"--cells 20 --fields " + file("f.f64") + " --field-count 4" + expression + " --out-of-core -o " +
            file("x.ply") + " --creases c.txt", "whole surface"},
-      {"--grid 21 --fields " + file("f.f64") + " --field-count 4" + demo_fields() + expression + " --out-of-core -o " +
+      {"--cells 20 --fields " + file("f.f64") + " --field-count 4" + demo_fields() + " --close --out-of-core -o " +
            file("x.ply"), "not both"},
-      {"--grid 21" + demo_fields() + " --field-count 4" + expression + " --out-of-core -o " + file("x.ply"),
+      {"--cells 20" + demo_fields() + " --field-count 4 --close --out-of-core -o " + file("x.ply"),
        "--field-count is for"},
-      {"--grid 21 --fields " + file("f.f64") + " --field-count 4 --slab-size 0" + expression, "at least 1"}};
+      {"--cells 20 --fields " + file("f.f64") + " --field-count 4 --slab-size 0" + expression, "at least 1"}};
   for(const auto& e : errors)
   {
     const Result r = run(e.first);
-    EXPECT_EQ(r.status, 1) << e.first;
+    EXPECT_EQ(r.status, 2) << e.first;
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(e.second), std::string::npos) << e.first << "\n" << r.err;
   }
 }
@@ -469,7 +473,7 @@ TEST_F(TbisoTool, BunnyBelowAPlaneMatchesAClip)
 TEST_F(TbisoTool, BunnyOnAGridHasOneCutLoop)
 {
   const std::string bunny = data_dir + "/meshes/bunny.off";
-  const Result r = run("--grid 64 --box -0.1,0.025,-0.07,0.07,0.195,0.07 --field distance:" + bunny +
+  const Result r = run("--cells 63,63,63 --box -0.1,0.025,-0.07,0.07,0.195,0.07 --field distance:" + bunny +
                        " --field plane:0,1,0,-0.11 --expr \"f0 & f1\" --close -o " + file("b.ply") + " --creases " +
                        file("b.txt") + " --corners " + file("b.xyz"));
   ASSERT_EQ(r.status, 0) << r.err;
@@ -501,11 +505,11 @@ TEST_F(TbisoTool, BunnyOnAGridHasOneCutLoop)
 // on their box faces, so they still meet at 90 degrees.
 TEST_F(TbisoTool, ClosedBoxKeepsItsEdgesAndCornersWhenSmoothed)
 {
-  const Result box = run("--grid 9 --field sphere:0,0,0,10 --close");
+  const Result box = run("--cells 8 --field sphere:0,0,0,10 --close");
   ASSERT_EQ(box.status, 0) << box.err;
   EXPECT_NE(box.out.find("creases:    96 edges, 12 polylines, 8 corners"), std::string::npos) << box.out;
 
-  const std::string common = "--grid 33 --field sphere:0,0,0,1.5 --close";
+  const std::string common = "--cells 32 --field sphere:0,0,0,1.5 --close";
   const Result plain = run(common + " -o " + file("p.ply") + " --corners " + file("p.xyz"));
   ASSERT_EQ(plain.status, 0) << plain.err;
   const Result smooth = run(common + " --smooth 10 -o " + file("s.ply") + " --corners " + file("s.xyz"));
@@ -536,7 +540,7 @@ TEST_F(TbisoTool, ClosedBoxKeepsItsEdgesAndCornersWhenSmoothed)
 
 TEST_F(TbisoTool, SmoothingKeepsCornersFixed)
 {
-  const std::string common = "--grid 33" + demo_fields();
+  const std::string common = "--cells 32" + demo_fields();
   const Result plain = run(common + " -o " + file("p.ply") + " --corners " + file("p.xyz"));
   ASSERT_EQ(plain.status, 0) << plain.err;
   const Result smooth = run(common + " --smooth 5 -o " + file("s.ply") + " --corners " + file("s.xyz"));
@@ -563,13 +567,13 @@ TEST_F(TbisoTool, SmoothingANonManifoldSurfaceFails)
 {
   // XOR of two overlapping balls: four sheets meet along the circle where
   // the spheres cross.
-  const Result r = run("--grid 17 --field sphere:0.2,0,0,0.5 --field sphere:-0.2,0,0,0.5 "
-                       "--expr \"f0 & !f1 | !f0 & f1\" --smooth");
+  const Result r = run("--cells 16 --field sphere:0.2,0,0,0.5 --field sphere:-0.2,0,0,0.5 "
+                       "--expr \"f0 & !f1 | !f0 & f1\" --smooth --quiet");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("non-manifold"), std::string::npos) << r.err;
   // Without smoothing it is written as a soup.
-  const Result soup = run("--grid 17 --field sphere:0.2,0,0,0.5 --field sphere:-0.2,0,0,0.5 "
+  const Result soup = run("--cells 16 --field sphere:0.2,0,0,0.5 --field sphere:-0.2,0,0,0.5 "
                           "--expr \"f0 & !f1 | !f0 & f1\" -o " + file("x.ply"));
   EXPECT_EQ(soup.status, 0) << soup.err;
   EXPECT_NE(soup.out.find("non-manifold edges"), std::string::npos) << soup.out;
@@ -577,7 +581,7 @@ TEST_F(TbisoTool, SmoothingANonManifoldSurfaceFails)
 
 TEST_F(TbisoTool, ParallelSequentialAndThreadLimitGiveTheSameFile)
 {
-  const std::string common = "--grid 25" + demo_fields() + " --close";
+  const std::string common = "--cells 24" + demo_fields() + " --close";
   ASSERT_EQ(run(common + " -o " + file("par.ply")).status, 0);
   ASSERT_EQ(run(common + " --sequential -o " + file("seq.ply")).status, 0);
   ASSERT_EQ(run(common + " --threads 1 -o " + file("one.ply")).status, 0);
@@ -592,19 +596,19 @@ TEST_F(TbisoTool, ParallelSequentialAndThreadLimitGiveTheSameFile)
 TEST_F(TbisoTool, GridTooLargeForMemoryIsRefusedWithTheEstimate)
 {
   const auto start = std::chrono::steady_clock::now();
-  const Result r = run("--grid 5000" + demo_fields());
+  const Result r = run("--cells 4999" + demo_fields());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_EQ(r.err.rfind("tbiso: error: --grid: 5000 x 5000 x 5000 vertices x 4 fields need at least 4000.0 GB", 0), 0u)
+  EXPECT_EQ(r.err.rfind("tbiso: error: --cells: 5000 x 5000 x 5000 vertices x 4 fields need at least 4000.0 GB", 0), 0u)
       << r.err;
   EXPECT_NE(r.err.find("available"), std::string::npos) << r.err;
   EXPECT_LT(seconds, 5.0) << "refused before sampling";
   // Anisotropic grids and out of core: the slabs in flight are what counts.
-  const Result flat = run("--grid 100000,100000,2" + demo_fields());
+  const Result flat = run("--cells 99999,99999,1" + demo_fields());
   EXPECT_EQ(flat.status, 1);
   EXPECT_NE(flat.err.find("need at least 640.0 GB"), std::string::npos) << flat.err;
-  const Result ooc = run("--grid 400000,400000,40 --fields " + file("f.f64") + " --field-count 1 --out-of-core -o " +
+  const Result ooc = run("--cells 399999,399999,39 --fields " + file("f.f64") + " --field-count 1 --out-of-core -o " +
                          file("o.ply"));
   EXPECT_EQ(ooc.status, 1);
   EXPECT_NE(ooc.err.find("out of core"), std::string::npos) << ooc.err;
@@ -617,13 +621,14 @@ TEST_F(TbisoTool, HelpAndOffOutput)
   EXPECT_NE(help.out.find("usage: tbiso"), std::string::npos) << help.out;
   EXPECT_EQ(help.err, "");
   EXPECT_EQ(run("-h").out, help.out);
-  const Result off = run("--grid 9 --field sphere:0,0,0,0.5 -o " + file("s.OFF"));
+  const Result off = run("--cells 8 --field sphere:0,0,0,0.5 -o " + file("s.OFF"));
   EXPECT_EQ(off.status, 0) << off.err;
   EXPECT_EQ(slurp(file("s.OFF")).substr(0, 4), "OFF\n");
 }
 
-// Every error: exit status 1, one line "tbiso: error: ..." naming the problem.
-TEST_F(TbisoTool, ErrorsGiveOneLineAndExitCodeOne)
+// Every error: one line "tbiso: error: ..." naming the problem; exit status 2
+// for a bad command line, 1 for a bad file or a failed computation.
+TEST_F(TbisoTool, ErrorsGiveOneLineAndTheRightExitCode)
 {
   const std::string sphere = " --field sphere:0,0,0,0.5";
   const std::string nan_fields = write("nan.txt", "1\n0\n1\nnan\n-1\n0\n1\n2\n3\n");
@@ -632,44 +637,50 @@ TEST_F(TbisoTool, ErrorsGiveOneLineAndExitCodeOne)
       write("nc.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n6\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
                        "0 0 -1 0\n0.2 0.2 1 0\nTetrahedra\n3\n1 2 3 4 0\n1 2 3 5 0\n1 2 3 6 0\nEnd\n");
   const std::string open_mesh = write("open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n");
-  const std::pair<std::string, const char*> cases[] = {
-      {"", "nothing to do"},
-      {"--grid 9 --frobnicate" + sphere, "unknown option"},
-      {"--grid 9" + sphere + " --expr", "needs a value"},
-      {"--grid 9x" + sphere, "not a whole number"},
-      {"--grid 1" + sphere, "at least 2"},
-      {"--grid 9 --field sphere:0,0,0,abc", "not a finite number"},
-      {"--grid 9 --field sphere:0,0,0", "expected 4"},
-      {"--grid 9 --box 1,1,1,0,0,0" + sphere, "minimum"},
-      {"--grid 9 --field cone:1,2", "unknown kind"},
-      {"--grid 9", "no fields"},
-      {"--field-count 1" + sphere, "no domain"},
-      {"--grid 9 --mesh x.mesh" + sphere, "not both"},
-      {"--grid 9 --fields " + short_fields + sphere, "not both"},
-      {"--grid 2 --fields " + short_fields, "2 vertices"},
-      {"--grid 2 --fields " + nan_fields, "non-finite"},
-      {"--grid 2 --fields " + file("missing.txt"), "cannot open"},
-      {"--grid 2 --fields " + file("missing.f64") + " --field-count 1", "cannot open"},
-      {"--grid 9" + sphere + " --field plane:1,0,0,0", "--expr is required"},
-      {"--grid 9" + sphere + " --field plane:1,0,0,0 --expr \"f0 & f3\"", "f3"},
-      {"--grid 9" + sphere + " --expr \"f0 & (f1\"", "column"},
-      {"--grid 9" + sphere + " --expr \"f0 + f1\"", "column"},
-      {"--mesh " + non_conforming + sphere, "not conforming"},
-      {"--mesh " + file("missing.mesh") + sphere, "cannot open"},
-      {"--mesh " + file("x.vtk") + sphere, "unknown tetrahedral mesh format"},
-      {"--grid 9 --field distance:" + file("missing.off"), "cannot open"},
-      {"--grid 9 --field distance:" + open_mesh, "not closed"},
-      {"--grid 9" + sphere + " -o " + file("out.stl"), "extension"},
-      {"--grid 9" + sphere + " --threads 0", "threads"},
-      {"--grid 9" + sphere + " --smooth 2 --lambda 0.5 --mu 0.5", "mu"},
-      {"--grid 9" + sphere + " --lambda 0.5", "--smooth"},
-      {"--grid 9" + sphere + " -o " + file("no/such/dir/out.ply"), "cannot write"},
-      {"--demo " + file("d") + " --grid 9", "--demo"},
+  struct Case { std::string arguments; int status; const char* expected; };
+  const Case cases[] = {
+      {"", 2, "nothing to do"},
+      {"--cells 8 --frobnicate" + sphere, 2, "unknown option"},
+      {"--cells 8" + sphere + " --expr", 2, "needs a value"},
+      {"--cells 8x" + sphere, 2, "not a number"},
+      {"--cells 8.5" + sphere, 2, "not a whole number"},
+      {"--cells 8 --cells 9" + sphere, 2, "more than once"},
+      {"--cells 8 --spacing 0.1" + sphere, 2, "only one"},
+      {"--cells 8,8" + sphere, 2, "NX,NY,NZ"},
+      {"--cells 0" + sphere, 2, "at least 1"},
+      {"--cells 8 --field sphere:0,0,0,abc", 2, "not a finite number"},
+      {"--cells 8 --field sphere:0,0,0", 2, "expected 4"},
+      {"--cells 8 --box 1,1,1,0,0,0" + sphere, 2, "minimum"},
+      {"--cells 8 --field cone:1,2", 2, "unknown kind"},
+      {"--cells 8", 2, "no fields"},
+      {"--field-count 1" + sphere, 2, "no domain"},
+      {"--cells 8 --mesh x.mesh" + sphere, 2, "not both"},
+      {"--cells 8 --fields " + short_fields + sphere, 2, "not both"},
+      {"--cells 1 --fields " + short_fields, 1, "2 vertices"},
+      {"--cells 1 --fields " + nan_fields, 1, "non-finite"},
+      {"--cells 1 --fields " + file("missing.txt"), 1, "cannot open"},
+      {"--cells 1 --fields " + file("missing.f64") + " --field-count 1", 1, "cannot open"},
+      {"--cells 8" + sphere + " --field plane:1,0,0,0", 2, "--expr is required"},
+      {"--cells 8" + sphere + " --field plane:1,0,0,0 --expr \"f0 & f3\"", 2, "f3"},
+      {"--cells 8" + sphere + " --expr \"f0 & (f1\"", 2, "column"},
+      {"--cells 8" + sphere + " --expr \"f0 + f1\"", 2, "column"},
+      {"--mesh " + non_conforming + sphere, 1, "not conforming"},
+      {"--mesh " + file("missing.mesh") + sphere, 1, "cannot open"},
+      {"--mesh " + file("x.vtk") + sphere, 1, "unknown tetrahedral mesh format"},
+      {"--cells 8 --field distance:" + file("missing.off"), 1, "cannot open"},
+      {"--cells 8 --field distance:" + open_mesh, 1, "not closed"},
+      {"--cells 8" + sphere + " -o " + file("out.xyz"), 2, "extension"},
+      {"--cells 8" + sphere + " --threads 0", 2, "threads"},
+      {"--cells 8" + sphere + " --smooth 2 --lambda 0.5 --mu 0.5", 1, "mu"},
+      {"--cells 8" + sphere + " --lambda 0.5", 2, "--smooth"},
+      {"--cells 8" + sphere + " -o " + file("no/such/dir/out.ply"), 1, "cannot write"},
+      {"--demo " + file("d") + " --cells 8", 2, "--demo"},
   };
-  for(const auto& [arguments, expected] : cases)
+  for(const auto& [arguments, status, expected] : cases)
   {
-    const Result r = run(arguments);
-    EXPECT_EQ(r.status, 1) << arguments << "\n" << r.err;
+    // --quiet: no progress line of the stages before a run-time error.
+    const Result r = run(arguments + (status == 1 ? " --quiet" : ""));
+    EXPECT_EQ(r.status, status) << arguments << "\n" << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << arguments << ": " << r.err;
     EXPECT_EQ(r.err.rfind("tbiso: error: ", 0), 0u) << arguments << ": " << r.err;
     EXPECT_NE(r.err.find(expected), std::string::npos) << arguments << ": " << r.err;
@@ -759,6 +770,36 @@ TEST(BooleanIsosurfaceToMesh, NonManifoldSurfaceIsRefused)
     EXPECT_NE(std::string(e.what()).find("soup"), std::string::npos) << e.what();
   }
   EXPECT_EQ(mesh.number_of_faces(), 0u);
+}
+
+} // namespace
+
+namespace {
+
+class TbisoLattice : public TbisoTool
+{};
+
+// --cells N (cells), --spacing h and the old --grid N+1 (vertices) name the
+// same grid on the default box; on a flat box --cells N is along the
+// longest side, the other axes in proportion.
+TEST_F(TbisoLattice, CellsSpacingAndTheOldGridFlagAgree)
+{
+  const std::string fields = " --field sphere:0.1,0,0,0.6 --field plane:0,1,1,0.2 --expr \"f0 & !f1\" --quiet";
+  ASSERT_EQ(run("--cells 16" + fields + " -o " + file("cells.ply")).status, 0);
+  ASSERT_EQ(run("--spacing 0.125" + fields + " -o " + file("spacing.ply")).status, 0);
+  ASSERT_EQ(run("--grid 17" + fields + " -o " + file("grid.ply")).status, 0);
+  ASSERT_EQ(run("--cells 16,16,16" + fields + " -o " + file("axes.ply")).status, 0);
+  const std::string cells = slurp(file("cells.ply"));
+  EXPECT_GT(cells.size(), 1000u);
+  EXPECT_TRUE(slurp(file("spacing.ply")) == cells);
+  EXPECT_TRUE(slurp(file("grid.ply")) == cells);
+  EXPECT_TRUE(slurp(file("axes.ply")) == cells);
+  const Result flat = run("--cells 20 --box -1,-1,-0.25,1,1,0.25 --field sphere:0,0,0,0.6");
+  ASSERT_EQ(flat.status, 0) << flat.err;
+  EXPECT_NE(flat.out.find("grid 21 x 21 x 6 vertices"), std::string::npos) << flat.out;
+  const Result fine = run("--spacing 0.3 --box -1,-1,-0.25,1,1,0.25 --field sphere:0,0,0,0.6");
+  EXPECT_NE(fine.out.find("grid 8 x 8 x 3 vertices"), std::string::npos) << fine.out; // ceil(2/0.3) = 7 cells
+  EXPECT_EQ(run("--help").out.find("--grid"), std::string::npos) << "the old flag is hidden";
 }
 
 } // namespace

@@ -1,6 +1,10 @@
 // Runs the command-line tools (`volume`, `csg`, `contour`) on good and bad
 // files the tests write themselves (and on the shared point sets), and checks
-// the exit status and what they print.
+// the exit status and what they print; and the conventions of the shared
+// command line (--version, --help, exit codes, --json, --threads, the mesh
+// formats) in all four tools, tbiso included.
+
+#include <CGAL/Boolean_isosurfacing_3/IO/read_triangle_soup.h>
 
 #include <gtest/gtest.h>
 
@@ -68,19 +72,25 @@ protected:
 class VolumeTool : public Tool
 {
 protected:
-  Result run(const std::string& arguments) { return run_tool(BISO_VOLUME_TOOL, arguments); }
+  // --quiet: these tests check the messages, not the progress lines (see
+  // Tool.ProgressLinesNameTheStageAndAreSilencedByQuiet).
+  Result run(const std::string& arguments) { return run_tool(BISO_VOLUME_TOOL, "--quiet " + arguments); }
 };
 
 class CsgTool : public Tool
 {
 protected:
-  Result run(const std::string& arguments) { return run_tool(BISO_CSG_TOOL, arguments); }
+  // --quiet: these tests check the messages, not the progress lines (see
+  // Tool.ProgressLinesNameTheStageAndAreSilencedByQuiet).
+  Result run(const std::string& arguments) { return run_tool(BISO_CSG_TOOL, "--quiet " + arguments); }
 };
 
 class ContourTool : public Tool
 {
 protected:
-  Result run(const std::string& arguments) { return run_tool(BISO_CONTOUR_TOOL, arguments); }
+  // --quiet: these tests check the messages, not the progress lines (see
+  // Tool.ProgressLinesNameTheStageAndAreSilencedByQuiet).
+  Result run(const std::string& arguments) { return run_tool(BISO_CONTOUR_TOOL, "--quiet " + arguments); }
 };
 
 // Whether `s` prints on one terminal line: no control byte, no DEL, no byte
@@ -644,10 +654,10 @@ TEST_F(ContourTool, BadCommandLinesGetOneLineAndTheRightExit)
       {sphere + "--k 2", 2, "at least 3"},
       {sphere + "--k 1e9", 2, "above the limit of 1024"},
       {sphere + "--k 7.5", 2, "not a whole number"},
-      {sphere + "--cell 0", 2, "positive"},
-      {sphere + "--cell nan", 2, "NaN"},
-      {sphere + "--cell inf", 2, "infinite"},
-      {sphere + "--cell ''", 2, "empty"},
+      {sphere + "--spacing 0", 2, "positive"},
+      {sphere + "--spacing nan", 2, "NaN"},
+      {sphere + "--spacing inf", 2, "infinite"},
+      {sphere + "--spacing ''", 2, "empty"},
       {sphere + "--rho -1", 2, "positive"},
       {sphere + "--delta -0.1", 2, "negative"},
       {sphere + "--delta nan", 2, "NaN"},
@@ -667,7 +677,7 @@ TEST_F(ContourTool, BadCommandLinesGetOneLineAndTheRightExit)
       {m_dir + "/missing.pts", 1, "cannot open"},
       {sphere + "-o " + m_dir + "/no/such/dir/x.off", 1, "cannot write"},
       {sphere + "--cells 100000", 1, "above the limit"},
-      {sphere + "--cell 1e-6", 1, "surface cubes"},
+      {sphere + "--spacing 1e-6", 1, "surface cubes"},
   };
   for(const Bad_arguments& c : cases)
   {
@@ -885,3 +895,227 @@ TEST_F(CsgTool, GenericTwinUnionNamesWhatTheLatticeMisses)
 }
 
 } // namespace
+
+// --- The shared command line (tools/Boolean_isosurfacing_3/cli.h) ---------
+
+struct Tool_binary { const char* name; const char* path; };
+const Tool_binary all_tools[] = {{"volume", BISO_VOLUME_TOOL},
+                                 {"csg", BISO_CSG_TOOL},
+                                 {"contour", BISO_CONTOUR_TOOL},
+                                 {"tbiso", BISO_TBISO_TOOL}};
+
+TEST_F(Tool, VersionPrintsTheToolAndTheProjectVersion)
+{
+  for(const Tool_binary& t : all_tools)
+  {
+    const Result r = run_tool(t.path, "--version");
+    EXPECT_EQ(r.status, 0) << t.name << ": " << r.err;
+    EXPECT_EQ(r.out, std::string(t.name) + " " + BISO_VERSION + "\n") << t.name;
+    EXPECT_TRUE(r.err.empty()) << t.name << ": " << r.err;
+  }
+}
+
+TEST_F(Tool, HelpGoesToStdoutWithTheCommonOptions)
+{
+  for(const Tool_binary& t : all_tools)
+    for(const char* flag : {"--help", "-h"})
+    {
+      const Result r = run_tool(t.path, flag);
+      EXPECT_EQ(r.status, 0) << t.name << " " << flag;
+      EXPECT_TRUE(r.err.empty()) << t.name << ": " << r.err;
+      EXPECT_NE(r.out.find(std::string("usage: ") + t.name), std::string::npos) << r.out;
+      for(const char* option : {"--threads", "--sequential", "--json", "--quiet", "--version"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << t.name << ": " << option;
+    }
+}
+
+TEST_F(Tool, UsageErrorsAreOneLineWithExitTwo)
+{
+  for(const Tool_binary& t : all_tools)
+    for(const char* arguments : {"--frobnicate", "--threads 0", "--threads two", "--threads 2 --sequential",
+                                 "--json --json", "--threads"})
+    {
+      const Result r = run_tool(t.path, arguments);
+      EXPECT_EQ(r.status, 2) << t.name << " " << arguments << ": " << r.err;
+      EXPECT_TRUE(is_one_clean_line(r.err)) << t.name << " " << arguments;
+      EXPECT_EQ(r.err.rfind(std::string(t.name) + ": error: ", 0), 0u) << r.err;
+      EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+}
+
+// The JSON summary, parsed by Python's json module; prints "key=value" for
+// the scalar members and "key=[n]" for the arrays' lengths, one per line.
+std::string json_members(const std::string& path)
+{
+  const std::string script =
+      "import json,sys\n"
+      "d = json.load(open(sys.argv[1]))\n"
+      "for k, v in d.items():\n"
+      "    print(k + '=' + (('[%d]' % len(v)) if isinstance(v, list) else ('{}' if isinstance(v, dict) else "
+      "json.dumps(v))))\n"
+      "    if isinstance(v, dict):\n"
+      "        for k2, v2 in v.items():\n"
+      "            print(k + '.' + k2 + '=' + json.dumps(v2))\n";
+  const std::string command = "/usr/bin/python3 -c \"$(cat <<'PYEOF'\n" + script + "PYEOF\n)\" '" + path + "' 2>&1";
+  std::string out;
+  if(FILE* pipe = popen(command.c_str(), "r"))
+  {
+    char buffer[4096];
+    std::size_t n;
+    while((n = fread(buffer, 1, sizeof buffer, pipe)) > 0)
+      out.append(buffer, n);
+    if(pclose(pipe) != 0)
+      return "python failed: " + out;
+  }
+  return out;
+}
+
+// The value of `key=` in json_members' output (NaN if absent).
+double member(const std::string& members, const std::string& key)
+{
+  const std::string lines = "\n" + members, line = "\n" + key + "=";
+  const std::size_t at = lines.find(line);
+  return at == std::string::npos ? std::nan("") : std::atof(lines.c_str() + at + line.size());
+}
+
+TEST_F(Tool, JsonSummariesParseAndHoldTheDocumentedKeys)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(1, 1, 1, 2));
+  const std::string tet = write("tet.off", tetrahedron_off);
+  const std::string points = std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn";
+  struct Case { const char* tool; std::string arguments; std::vector<std::string> keys; };
+  const Case cases[] = {
+      {BISO_VOLUME_TOOL, tet + " " + tet, {"results=[2]"}},
+      {BISO_CSG_TOOL, a + " " + b + " --op union --cells 16 -o " + m_dir + "/u.off",
+       {"vertices=", "faces=", "volume=", "lattice=", "expression=", "times.classification=", "times.read="}},
+      {BISO_CONTOUR_TOOL, points + " -o " + m_dir + "/c.off", {"vertices=", "faces=", "points=", "times.contouring="}},
+      {BISO_TBISO_TOOL, "--cells 8 --field sphere:0,0,0,0.5 -o " + m_dir + "/t.ply",
+       {"vertices=", "faces=", "volume=", "closed=true", "creases=", "times.extraction=", "times.fields="}},
+  };
+  for(const Case& c : cases)
+  {
+    const Result r = run_tool(c.tool, c.arguments + " --json");
+    ASSERT_EQ(r.status, 0) << c.tool << ": " << r.err;
+    std::ofstream(m_dir + "/summary.json") << r.out;
+    const std::string members = json_members(m_dir + "/summary.json");
+    for(const std::string key : {"tool=", "version=\"" BISO_VERSION "\"", "inputs=", "outputs=", "times=",
+                                 "warnings=[0]"})
+      EXPECT_NE(members.find(key), std::string::npos) << c.tool << ": " << key << "\n" << members << r.out;
+    for(const std::string& key : c.keys)
+      EXPECT_NE(members.find(key), std::string::npos) << c.tool << ": " << key << "\n" << members;
+    EXPECT_EQ(r.out.find("time "), std::string::npos) << "no human summary with --json: " << r.out;
+  }
+  // The values are the ones of the human summary.
+  const Result human = run_tool(BISO_CSG_TOOL, a + " " + b + " --op union --cells 16");
+  const Result json = run_tool(BISO_CSG_TOOL, a + " " + b + " --op union --cells 16 --json");
+  std::ofstream(m_dir + "/csg.json") << json.out;
+  const std::string members = json_members(m_dir + "/csg.json");
+  EXPECT_NEAR(member(members, "volume"), number_after(human.out, "volume "), 1e-6) << members;
+  EXPECT_EQ(member(members, "faces"), number_after(human.out, "vertices, ")) << members << human.out;
+}
+
+TEST_F(Tool, JsonHasTheWarnings)
+{
+  // A thin slab the lattice misses: a warning, in the JSON too.
+  const std::string a = write("a.off", box_off(0, 0, 0, 2));
+  std::ostringstream slab;
+  slab << "OFF\n8 12 0\n";
+  for(int k = 0; k < 8; ++k)
+    slab << ((k & 1) ? 2.0 : 0.0) << " " << ((k & 2) ? 2.0 : 0.0) << " " << ((k & 4) ? 1.0005 : 1.0) << "\n";
+  slab << "3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n3 1 3 7\n3 1 7 5\n";
+  const std::string thin = write("thin.off", slab.str());
+  const Result r = run_tool(BISO_CSG_TOOL, a + " " + thin + " --op difference --cells 8 --json --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ofstream(m_dir + "/w.json") << r.out;
+  const std::string members = json_members(m_dir + "/w.json");
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
+  EXPECT_EQ(members.find("warnings=[0]"), std::string::npos) << members;
+  EXPECT_NE(members.find("warnings=["), std::string::npos) << members;
+}
+
+TEST_F(Tool, ProgressLinesNameTheStageAndAreSilencedByQuiet)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(1, 1, 1, 2));
+  const Result r = run_tool(BISO_CSG_TOOL, a + " " + b + " --op union --cells 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("csg: classified "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" lattice points in "), std::string::npos) << r.err;
+  const Result quiet = run_tool(BISO_CSG_TOOL, a + " " + b + " --op union --cells 16 --quiet");
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+  const Result t = run_tool(BISO_TBISO_TOOL, "--cells 8 --field sphere:0,0,0,0.5");
+  EXPECT_NE(t.err.find("tbiso: extracted "), std::string::npos) << t.err;
+  EXPECT_TRUE(run_tool(BISO_TBISO_TOOL, "--cells 8 --field sphere:0,0,0,0.5 --quiet").err.empty());
+  const Result c = run_tool(BISO_CONTOUR_TOOL, std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn");
+  EXPECT_NE(c.err.find("contour: contoured "), std::string::npos) << c.err;
+}
+
+TEST_F(Tool, SequentialAndThreadLimitGiveByteIdenticalFiles)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(0.73, 0.61, 0.52, 2));
+  const std::string points = std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn";
+  struct Case { const char* tool; std::string arguments; };
+  const Case cases[] = {{BISO_CSG_TOOL, a + " " + b + " --op difference --cells 40"},
+                        {BISO_CONTOUR_TOOL, points + " --cells 40"},
+                        {BISO_TBISO_TOOL, "--cells 24 --field sphere:0,0,0,0.6 --field plane:1,1,0,0.1 --expr "
+                                          "\"f0 & !f1\" --close"}};
+  for(const Case& c : cases)
+  {
+    std::vector<std::string> files;
+    for(const char* mode : {"", "--sequential", "--threads 2", "--threads 1"})
+    {
+      const std::string out = m_dir + "/out" + std::to_string(files.size()) + ".off";
+      const Result r = run_tool(c.tool, c.arguments + " " + mode + " --quiet -o " + out);
+      ASSERT_EQ(r.status, 0) << c.tool << " " << mode << ": " << r.err;
+      files.push_back(slurp(out));
+    }
+    EXPECT_GT(files[0].size(), 1000u) << c.tool;
+    for(std::size_t i = 1; i < files.size(); ++i)
+      EXPECT_TRUE(files[i] == files[0]) << c.tool << ": run " << i << " differs";
+  }
+}
+
+// Every mesh-writing tool writes OFF, OBJ, PLY and STL by the extension;
+// each reads back (the package's reader) with the faces the tool reports.
+TEST_F(Tool, EveryMeshFormatReadsBackWithTheReportedFaces)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(0.73, 0.61, 0.52, 2));
+  const std::string points = std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn";
+  struct Case { const char* tool; std::string arguments; const char* faces_key; };
+  const Case cases[] = {{BISO_CSG_TOOL, a + " " + b + " --op union --cells 20", "faces"},
+                        {BISO_CONTOUR_TOOL, points + " --cells 30", "faces"},
+                        {BISO_TBISO_TOOL, "--cells 12 --field sphere:0,0,0,0.6 --field box:-0.3,-0.3,-0.3,0.3,0.3,1 "
+                                          "--expr \"f0 & !f1\"", "triangles"}};
+  for(const Case& c : cases)
+    for(const char* format : {"off", "obj", "ply", "stl", "OFF"})
+    {
+      const std::string out = m_dir + "/out." + format;
+      const Result r = run_tool(c.tool, c.arguments + " --json --quiet -o " + out);
+      ASSERT_EQ(r.status, 0) << c.tool << " " << format << ": " << r.err;
+      std::ofstream(m_dir + "/f.json") << r.out;
+      const double faces = member(json_members(m_dir + "/f.json"), c.faces_key);
+      ASSERT_GT(faces, 10) << c.tool << " " << format << ": " << r.out;
+      CGAL::Boolean_isosurfacing::Triangle_soup_3 soup;
+      ASSERT_NO_THROW(soup = CGAL::Boolean_isosurfacing::IO::read_triangle_soup(out)) << c.tool << " " << format;
+      EXPECT_EQ(double(soup.triangles.size()), faces) << c.tool << " " << format;
+    }
+  for(const Case& c : cases)
+  {
+    const Result r = run_tool(c.tool, c.arguments + " -o " + m_dir + "/out.xyz");
+    EXPECT_EQ(r.status, 2) << c.tool << ": " << r.err;
+    EXPECT_TRUE(is_one_clean_line(r.err)) << r.err;
+    EXPECT_NE(r.err.find("extension"), std::string::npos) << r.err;
+  }
+}
+
+// File names with quotes, backslashes and control bytes still give valid
+// JSON (escaped, and the control bytes shown as \xNN as on stderr).
+TEST_F(Tool, JsonEscapesStrangeFileNames)
+{
+  const std::string name = write("q\"uo\\te\x01.off", tetrahedron_off);
+  const Result r = run_tool(BISO_VOLUME_TOOL, "'" + name + "' --json --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ofstream(m_dir + "/s.json") << r.out;
+  const std::string members = json_members(m_dir + "/s.json");
+  EXPECT_NE(members.find("inputs=[1]"), std::string::npos) << members << r.out;
+  EXPECT_NE(r.out.find("q\\\"uo\\\\te\\\\x01.off"), std::string::npos) << r.out;
+}

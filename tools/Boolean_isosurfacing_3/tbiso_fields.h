@@ -4,8 +4,8 @@
 // at the grid vertices a slab (or an MPI rank's range) asks for, so that no
 // process ever holds more than the values it reads.
 
-#ifndef BISO_EXAMPLES_TBISO_FIELDS_H
-#define BISO_EXAMPLES_TBISO_FIELDS_H
+#ifndef BISO_TOOLS_TBISO_FIELDS_H
+#define BISO_TOOLS_TBISO_FIELDS_H
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/Tetrahedral_grid_3.h>
@@ -240,4 +240,4 @@ private:
 
 } // namespace tbiso_fields
 
-#endif // BISO_EXAMPLES_TBISO_FIELDS_H
+#endif // BISO_TOOLS_TBISO_FIELDS_H

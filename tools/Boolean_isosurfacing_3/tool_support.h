@@ -1,19 +1,18 @@
-// Command-line conventions shared by the `csg` and `contour` tools:
+// The tools' value checks and file checks, under the command-line layer of
+// cli.h (which parses the command line with CLI11 and maps these errors to
+// exit statuses):
 //
-//   - `--help` prints the usage on stdout and exits 0;
-//   - a bad command line (unknown flag, missing or bad value, repeated flag)
-//     is one line on stderr and exit 2 (`Usage_error`);
-//   - a problem with the files or the computation is one line on stderr and
-//     exit 1;
+//   - `Usage_error` (exit 2) and `File_error` (exit 1);
 //   - an error message never carries raw control bytes or invalid UTF-8 from
-//     a file or an argument to the terminal: they are shown as \xNN.
-//
-// Numbers are parsed strictly: the whole argument, no leading blank, NaN and
-// infinities refused by name, and the range of each flag checked here, before
-// any file is read.
+//     a file or an argument to the terminal: they are shown as \xNN;
+//   - numbers are parsed strictly: the whole argument, no leading blank, NaN
+//     and infinities refused by name, the range of each flag checked before
+//     any file is read;
+//   - input files are checked to be readable files, output files to be
+//     writable, before any computation.
 
-#ifndef BISO_EXAMPLES_TOOL_SUPPORT_H
-#define BISO_EXAMPLES_TOOL_SUPPORT_H
+#ifndef BISO_TOOLS_TOOL_SUPPORT_H
+#define BISO_TOOLS_TOOL_SUPPORT_H
 
 #include <cctype>
 #include <cerrno>
@@ -197,4 +196,4 @@ inline void check_output_file(const std::string& path)
 
 } // namespace biso_tools
 
-#endif // BISO_EXAMPLES_TOOL_SUPPORT_H
+#endif // BISO_TOOLS_TOOL_SUPPORT_H
