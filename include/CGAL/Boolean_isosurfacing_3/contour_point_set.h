@@ -29,7 +29,11 @@
 //  * Triangles are oriented outward; the seed's normal cross(p1-p0, p2-p0)
 //    points out of the object.
 
+#include <CGAL/Boolean_isosurfacing_3/Algorithm_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
+#include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
 #include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
@@ -67,12 +71,16 @@
 namespace CGAL {
 namespace Boolean_isosurfacing {
 
+/// \ingroup PkgBooleanIsosurfacing3Ref
 /// What a contouring run did; all counts are exact, times are wall clock.
-struct Contouring_report
+/// `number_of_vertices`, `number_of_faces` (triangles), `seconds` and
+/// `warnings` (holes left or repaired, border exits) are those of
+/// `Algorithm_statistics`.
+struct Contouring_statistics : Algorithm_statistics
 {
   double cell_size = 0;                          ///< lattice spacing r
   std::array<double, 3> origin{{0, 0, 0}};       ///< lattice point (0,0,0)
-  std::array<std::size_t, 3> number_of_cells{{0, 0, 0}};
+  std::array<std::size_t, 3> number_of_cells{{0, 0, 0}}; ///< cells of the lattice along each axis
   std::size_t field_evaluations = 0;             ///< lattice points where f was evaluated
   std::size_t undefined_points = 0;              ///< ... of which f was undefined
   std::size_t visited_cubes = 0;                 ///< cubes examined by the traversal
@@ -82,18 +90,24 @@ struct Contouring_report
   std::size_t discontinuous_cubes = 0;           ///< skipped: f jumps across a sign-changing edge
   std::size_t ambiguous_faces = 0;               ///< (counted once per cube side)
   std::size_t joined_faces = 0;                  ///< ... where the decider joined the inside
-  std::size_t centre_vertices = 0;
+  std::size_t centre_vertices = 0;               ///< polygon centre vertices added
   std::size_t removed_closed_components = 0;     ///< bubbles smaller than minimum_closed_component_size
   std::size_t split_vertices = 0;                ///< vertices pinched between two holes, duplicated
   std::size_t filled_holes = 0;                  ///< border loops smaller than maximum_hole_size, triangulated
   std::size_t walk_seeds = 0;                    ///< crossed cubes reached by walking down |f| from a sample
-  std::size_t number_of_vertices = 0, number_of_triangles = 0;
   /// No triangle came out: f changes sign in no cube reached from the samples
   /// (or only in skipped ones).  `contour_point_set` throws `Empty_contour_error`.
   bool empty_output = false;
-  double field_seconds = 0;                      ///< evaluating f at lattice points
-  double contouring_seconds = 0;                 ///< traversal + triangles, without field time
+  double seconds_field = 0;                      ///< evaluating f at lattice points
+  double seconds_contouring = 0;                 ///< traversal + triangles, without field time
+  std::size_t number_of_triangles = 0;           ///< \deprecated the same as `number_of_faces`
+  double field_seconds = 0;                      ///< \deprecated the same as `seconds_field`
+  double contouring_seconds = 0;                 ///< \deprecated the same as `seconds_contouring`
 };
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// \deprecated the former name of `Contouring_statistics`.
+typedef Contouring_statistics Contouring_report;
 
 /// Thrown by `contour_point_set` when the contour has no triangle: an empty
 /// mesh is never a silent success.  `report()` tells what the traversal saw.
@@ -393,90 +407,28 @@ std::pair<std::size_t, std::size_t> close_small_holes(PointOutRange& points, Tri
 
 } // namespace internal
 
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
- * Contours the zero set of `field` on a regular lattice, visiting only the
- * cubes connected, through faces the surface crosses, to the cubes that
- * contain `field.points()`.  Appends points and outward-oriented triangles
- * (f < 0 is inside).
- *
- * \param field a model of `ContouringField_3`, e.g. `Tangent_plane_signed_distance_3<K>`:
- *   `typedef Point_3` (constructible from 3 doubles, `p[a]` coordinates);
- *   `points()`: a range of `Point_3`, the seeds (the samples);
- *   `sampling_density()`, `noise_level()`: doubles (default cell size, margin, bubbles);
- *   optionally `default_cell_size()`: a double, the default lattice spacing;
- *   `operator()(const Point_3&)`: `std::optional<double>`, empty = undefined.
- * \param out_points a `std::vector`-like container of `K::Point_3`
- *        (`push_back`, `size`, `operator[]`, `erase`, `insert`)
- * \param out_triangles a `std::vector`-like container of 3-index polygons
- *        (the same, and construction from `{a, b, c}`)
- * \param np an optional sequence of named parameters among the ones listed
- *        below, then the notes on them.
- *
- * \cgalNamedParamsBegin
- *   \cgalParamNBegin{cell_size}
- *     \cgalParamDescription{the lattice spacing r}
- *     \cgalParamType{`double`} \cgalParamDefault{`field.default_cell_size()` when the field has it, else `field.sampling_density() / 3`}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{cells_along_longest_side}
- *     \cgalParamDescription{N: r = the longest side of the bounding box of the samples / N (ignored when `cell_size` is given)}
- *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{maximum_jump}
- *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
- *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{minimum_closed_component_size}
- *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
- *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{maximum_hole_size}
- *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
- *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{lattice_margin}
- *     \cgalParamDescription{cells added around the bounding box of the samples}
- *     \cgalParamType{`std::size_t`} \cgalParamDefault{ceil((rho + delta) / r) + 2}
- *   \cgalParamNEnd
- * \cgalNamedParamsEnd
- *
- * Notes on the named parameters (`Boolean_isosurfacing::parameters::`):
- *  - `cell_size(r)`: lattice spacing;
- *  - `cells_along_longest_side(N)`: r = longest bounding-box side / N
- *    (ignored when `cell_size` is given);
- *  - default r = `field.default_cell_size()` when the field has it, else
- *    sampling_density / 3 (for Tangent_plane_signed_distance_3, a third of
- *    the *estimated* rho, even when rho is given),
- *    about 1.25 times the mean sample spacing: finer lattices only resolve
- *    the facets of the piecewise-planar f, coarser ones lose detail;
- *  - `maximum_jump(j)`: a cube with a sign-changing edge along which f
- *    changes by more than j is a discontinuity of f, not a surface, and is
- *    skipped (default 3 r + 2 delta; `std::numeric_limits<double>::infinity()`
- *    gives Hoppe's plain rule);
- *  - `minimum_closed_component_size(s)`: closed pieces of the output (each
- *    edge in two of their triangles) whose bounding box has a diagonal below
- *    s are removed: the "bubbles" Hoppe's f leaves in concave regions, around
- *    one or two lattice points.  Default rho (`field.sampling_density()`):
- *    a rho-dense sample cannot witness a smaller closed piece; 0 keeps all;
- *  - `lattice_margin(m)`: cells added around the bounding box of the samples
- *    (default ceil((rho + delta) / r) + 2, so that the traversal ends at
- *    undefined corners before it reaches the lattice border).
- * \throws Invalid_input_error a non-positive or non-finite r, or more than
- *         2^20 lattice cells along an axis.
- */
-template <typename ContouringField_3, typename PointOutRange, typename TriangleRange,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Contouring_report contour_signed_distance(const ContouringField_3& field,
-                                          PointOutRange& out_points, TriangleRange& out_triangles,
-                                          const NamedParameters& np = parameters::default_values())
+namespace internal {
+
+// The lattice of a contouring: point (i, j, k) is origin + (i, j, k) r,
+// cells[a] cells along axis a.  Sparse: only the cubes the traversal
+// reaches are ever looked at, so it may be far larger than a
+// `Regular_lattice_3` (2^20 cells per axis).
+struct Contouring_lattice
+{
+  std::array<double, 3> origin{{0, 0, 0}};
+  double r = 0;
+  std::array<std::int64_t, 3> cells{{1, 1, 1}};
+};
+
+// The default lattice of `field`, with the named parameters `cell_size`,
+// `cells_along_longest_side` and `lattice_margin`.
+template <typename ContouringField_3, typename NamedParameters>
+Contouring_lattice default_contouring_lattice(const ContouringField_3& field, const NamedParameters& np)
 {
   typedef typename ContouringField_3::Point_3 Point_3;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const auto total_start = std::chrono::steady_clock::now();
-  Contouring_report report;
-
-  // ---- lattice -----------------------------------------------------------
+  Contouring_lattice lattice;
   const auto& samples = field.points();
   std::array<double, 3> lo, hi;
   for(int a = 0; a < 3; ++a)
@@ -516,13 +468,50 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
   std::array<std::int64_t, 3> cells;
   for(int a = 0; a < 3; ++a)
   {
-    report.origin[a] = lo[a] - margin * r;
+    lattice.origin[a] = lo[a] - margin * r;
     const double n = std::ceil((hi[a] - lo[a]) / r + 2 * margin);
     if(!(n < double(internal::lattice_limit - 1)))
       throw Invalid_input_error("the lattice would have more than 2^20 cells along an axis; use a larger cell size");
     cells[a] = (std::max)(std::int64_t(1), std::int64_t(n));
-    report.number_of_cells[a] = std::size_t(cells[a]);
+    lattice.cells[a] = cells[a];
   }
+  report.cell_size = r;
+  lattice.r = r;
+  return lattice;
+}
+
+// One line per reason the output lacks the closed-2-manifold guarantee.
+inline void add_contouring_warnings(Contouring_statistics& report)
+{
+  if(report.empty_output)
+    report.warnings.push_back("the contour is empty");
+  if(report.border_exits > 0)
+    report.warnings.push_back(std::to_string(report.border_exits) +
+                              " crossed face(s) on the lattice border: the output is open there");
+  if(report.skipped_cubes + report.discontinuous_cubes > 0)
+    report.warnings.push_back(std::to_string(report.skipped_cubes + report.discontinuous_cubes) +
+                              " crossed cube(s) skipped (undefined corner or jump of f); " +
+                              std::to_string(report.filled_holes) + " hole(s) filled");
+}
+
+// The contouring on `lattice` (appends to the outputs).
+template <typename ContouringField_3, typename PointOutRange, typename TriangleRange, typename NamedParameters>
+Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, const ContouringField_3& field,
+                                         PointOutRange& out_points, TriangleRange& out_triangles,
+                                         const NamedParameters& np)
+{
+  typedef typename ContouringField_3::Point_3 Point_3;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto total_start = std::chrono::steady_clock::now();
+  const Progress progress = progress_of(np);
+  Contouring_statistics report;
+  const auto& samples = field.points();
+  const double r = lattice.r;
+  const std::array<std::int64_t, 3> cells = lattice.cells;
+  report.origin = lattice.origin;
+  for(int a = 0; a < 3; ++a)
+    report.number_of_cells[a] = std::size_t(cells[a]);
   report.cell_size = r;
   // A signed distance is 1-Lipschitz: across a lattice edge of length r a true
   // zero crossing changes f by at most r, plus the noise on both ends.  Hoppe's
@@ -607,6 +596,9 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
       const std::uint64_t key = stack.back();
       stack.pop_back();
       ++report.visited_cubes;
+      // The traversal's extent is unknown beforehand: report 0 as a chance to cancel.
+      if((report.visited_cubes & 0xFFFF) == 0)
+        progress.report(0);
       const std::array<std::int64_t, 3> c = internal::lattice_index(key);
       const Cube_state state = cube_state(c, values);
       if(state == Cube_state::undefined_crossed)
@@ -667,6 +659,8 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
   const int max_steps = int((std::min)(std::ceil(walk_length / (0.5 * r)), 1e6));
   for(std::size_t s = 0; s < samples.size(); ++s)
   {
+    if((s & 1023) == 0)
+      progress.report(0.5 * double(s) / double(samples.size()));
     std::array<double, 3> q = sample_xyz[s];
     std::array<std::int64_t, 3> c = cube_of(q);
     if(crossed_cubes.count(internal::lattice_key(c[0], c[1], c[2])) != 0)
@@ -836,11 +830,190 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
     report.number_of_triangles = out_triangles.size() - first_triangle;
   }
   report.number_of_vertices = next_vertex - first_vertex;
+  report.number_of_faces = report.number_of_triangles;
   report.empty_output = report.number_of_triangles == 0;
-  report.field_seconds = field_seconds;
-  report.contouring_seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count() - field_seconds;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count();
+  report.seconds_field = field_seconds;
+  report.seconds_contouring = report.seconds - field_seconds;
+  report.field_seconds = report.seconds_field;
+  report.contouring_seconds = report.seconds_contouring;
+  add_contouring_warnings(report);
+  progress.report(1.0);
   return report;
+}
+
+} // namespace internal
+
+
+namespace internal {
+
+// The mesh of a contouring soup (cleared first); pinched vertices between two
+// holes are duplicated (PMP::orient_polygon_soup) so that the mesh is valid.
+template <typename Point, typename PolygonMesh>
+void contour_soup_to_mesh(std::vector<Point>& soup_points, std::vector<std::array<std::size_t, 3>>& soup_triangles,
+                          PolygonMesh& mesh)
+{
+  CGAL::clear(mesh);
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_triangles))
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup_triangles);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup_triangles, mesh);
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * The default contouring lattice of `field`: spacing `cell_size` (or the
+ * longest side of the samples' bounding box / `cells_along_longest_side`,
+ * or the field's default), `lattice_margin` cells around the bounding box
+ * of the samples (see `contour_signed_distance()` for the defaults).
+ * \throws Invalid_input_error for a non-positive or non-finite spacing, or a negative margin.
+ * \throws Lattice_too_large_error if the lattice has more than
+ *         `Regular_lattice_3::max_number_of_points` points.
+ */
+template <typename ContouringField_3, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Regular_lattice_3 contouring_lattice(const ContouringField_3& field,
+                                     const NamedParameters& np = parameters::default_values())
+{
+  const internal::Contouring_lattice l = internal::default_contouring_lattice(field, np);
+  return Regular_lattice_3(l.origin, l.r,
+                           {{std::size_t(l.cells[0]) + 1, std::size_t(l.cells[1]) + 1, std::size_t(l.cells[2]) + 1}});
+}
+
+namespace internal {
+
+inline Contouring_lattice to_contouring_lattice(const Regular_lattice_3& lattice)
+{
+  Contouring_lattice l;
+  l.r = lattice.spacing();
+  for(int a = 0; a < 3; ++a)
+  {
+    l.origin[a] = lattice.coordinate(a, 0);
+    if(lattice.number_of_points(a) < 2)
+      throw Invalid_input_error("a contouring lattice needs at least 2 points along every axis");
+    if(lattice.number_of_points(a) - 1 >= std::size_t(lattice_limit - 1))
+      throw Invalid_input_error("the lattice has more than 2^20 cells along an axis");
+    l.cells[a] = std::int64_t(lattice.number_of_points(a) - 1);
+  }
+  return l;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * Contours the zero set of `field` on `lattice`, visiting only the
+ * cubes connected, through faces the surface crosses, to the cubes that
+ * contain `field.points()`.  The outputs are cleared first (the package's
+ * rule for every output), then receive the points and outward-oriented
+ * triangles (f < 0 is inside).
+ *
+ * \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`; the
+ *         traversal is sequential today whatever the tag (it is there so that
+ *         every algorithm of the package has the same signature).
+ *
+ * \param lattice the domain: lattice point (i, j, k) is `lattice.coordinate()`s;
+ *   `contouring_lattice(field, np)` is the default one (the named parameters
+ *   `cell_size`, `cells_along_longest_side` and `lattice_margin` below are
+ *   those of `contouring_lattice()`, and ignored here)
+ * \param field a model of `ContouringField_3`, e.g. `Tangent_plane_signed_distance_3<K>`:
+ *   `typedef Point_3` (constructible from 3 doubles, `p[a]` coordinates);
+ *   `points()`: a range of `Point_3`, the seeds (the samples);
+ *   `sampling_density()`, `noise_level()`: doubles (default cell size, margin, bubbles);
+ *   optionally `default_cell_size()`: a double, the default lattice spacing;
+ *   `operator()(const Point_3&)`: `std::optional<double>`, empty = undefined.
+ * \param out_points a `std::vector`-like container of `K::Point_3`
+ *        (`push_back`, `size`, `operator[]`, `erase`, `insert`)
+ * \param out_triangles a `std::vector`-like container of 3-index polygons
+ *        (the same, and construction from `{a, b, c}`)
+ * \param np an optional sequence of named parameters among the ones listed
+ *        below, then the notes on them.
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{callback}
+ *     \cgalParamDescription{`CGAL::parameters::callback`: called with the fraction done; returning
+ *       `false` cancels the run with `Operation_cancelled_error`}
+ *     \cgalParamType{a callable `bool(double)`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{cell_size}
+ *     \cgalParamDescription{the lattice spacing r}
+ *     \cgalParamType{`double`} \cgalParamDefault{`field.default_cell_size()` when the field has it, else `field.sampling_density() / 3`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{cells_along_longest_side}
+ *     \cgalParamDescription{N: r = the longest side of the bounding box of the samples / N (ignored when `cell_size` is given)}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_jump}
+ *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
+ *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{minimum_closed_component_size}
+ *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
+ *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{maximum_hole_size}
+ *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
+ *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{lattice_margin}
+ *     \cgalParamDescription{cells added around the bounding box of the samples}
+ *     \cgalParamType{`std::size_t`} \cgalParamDefault{ceil((rho + delta) / r) + 2}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * Notes on the named parameters (`Boolean_isosurfacing::parameters::`):
+ *  - `cell_size(r)`: lattice spacing;
+ *  - `cells_along_longest_side(N)`: r = longest bounding-box side / N
+ *    (ignored when `cell_size` is given);
+ *  - default r = `field.default_cell_size()` when the field has it, else
+ *    sampling_density / 3 (for Tangent_plane_signed_distance_3, a third of
+ *    the *estimated* rho, even when rho is given),
+ *    about 1.25 times the mean sample spacing: finer lattices only resolve
+ *    the facets of the piecewise-planar f, coarser ones lose detail;
+ *  - `maximum_jump(j)`: a cube with a sign-changing edge along which f
+ *    changes by more than j is a discontinuity of f, not a surface, and is
+ *    skipped (default 3 r + 2 delta; `std::numeric_limits<double>::infinity()`
+ *    gives Hoppe's plain rule);
+ *  - `minimum_closed_component_size(s)`: closed pieces of the output (each
+ *    edge in two of their triangles) whose bounding box has a diagonal below
+ *    s are removed: the "bubbles" Hoppe's f leaves in concave regions, around
+ *    one or two lattice points.  Default rho (`field.sampling_density()`):
+ *    a rho-dense sample cannot witness a smaller closed piece; 0 keeps all;
+ *  - `lattice_margin(m)`: cells added around the bounding box of the samples
+ *    (default ceil((rho + delta) / r) + 2, so that the traversal ends at
+ *    undefined corners before it reaches the lattice border).
+ * \throws Invalid_input_error a non-positive or non-finite r, or more than
+ *         2^20 lattice cells along an axis.
+ */
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename ContouringField_3, typename PointOutRange,
+          typename TriangleRange, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Contouring_statistics contour_signed_distance(const Regular_lattice_3& lattice, const ContouringField_3& field,
+                                              PointOutRange& out_points, TriangleRange& out_triangles,
+                                              const NamedParameters& np = parameters::default_values())
+{
+  internal::check_concurrency_tag<ConcurrencyTag>();
+  out_points.clear();
+  out_triangles.clear();
+  return internal::contour_on_lattice(internal::to_contouring_lattice(lattice), field, out_points, out_triangles, np);
+}
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * \deprecated The former shape, the lattice from the named parameters: the
+ * contouring on `contouring_lattice(field, np)` (without its limit of 2^31
+ * lattice points: the traversal is sparse).  The outputs are cleared first.
+ */
+template <typename ContouringField_3, typename PointOutRange, typename TriangleRange,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename = std::enable_if_t<!std::is_same<ContouringField_3, Regular_lattice_3>::value>>
+Contouring_statistics contour_signed_distance(const ContouringField_3& field, PointOutRange& out_points,
+                                              TriangleRange& out_triangles,
+                                              const NamedParameters& np = parameters::default_values())
+{
+  out_points.clear();
+  out_triangles.clear();
+  return internal::contour_on_lattice(internal::default_contouring_lattice(field, np), field, out_points,
+                                      out_triangles, np);
 }
 
 /*!
@@ -848,8 +1021,10 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
  * Points (+ optional normals) to an outward-oriented triangle soup:
  * `Tangent_plane_signed_distance_3` then `contour_signed_distance()`.
  *
+ * \tparam ConcurrencyTag as for `contour_signed_distance()`
+ * \param lattice the domain (e.g. `contouring_lattice()` of the samples' field)
  * \param points the samples
- * \param out_points, out_triangles the soup is appended to them
+ * \param out_points, out_triangles the output soup, cleared first
  * \param np an optional sequence of named parameters among the ones listed below
  *
  * \cgalNamedParamsBegin
@@ -902,18 +1077,42 @@ Contouring_report contour_signed_distance(const ContouringField_3& field,
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{ceil((rho + delta) / r) + 2}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
- * \returns the contouring report.
+ * \returns the contouring statistics.
  * \throws Empty_contour_error when no triangle comes out.
+ * \throws Operation_cancelled_error when the `callback` named parameter returns `false`.
  */
-template <typename PointRange, typename PointOutRange, typename TriangleRange,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename PointRange, typename PointOutRange,
+          typename TriangleRange, typename NamedParameters = CGAL::parameters::Default_named_parameters,
           typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value>>
-Contouring_report contour_point_set(const PointRange& points, PointOutRange& out_points, TriangleRange& out_triangles,
-                                    const NamedParameters& np = parameters::default_values())
+Contouring_statistics contour_point_set(const Regular_lattice_3& lattice, const PointRange& points,
+                                        PointOutRange& out_points, TriangleRange& out_triangles,
+                                        const NamedParameters& np = parameters::default_values())
 {
   typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
   const Tangent_plane_signed_distance_3<Geom_traits> field(points, np);
-  const Contouring_report report = contour_signed_distance(field, out_points, out_triangles, np);
+  const Contouring_statistics report =
+      contour_signed_distance<ConcurrencyTag>(lattice, field, out_points, out_triangles, np);
+  if(report.empty_output)
+    throw Empty_contour_error(report);
+  return report;
+}
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * \deprecated The former shape, the lattice from the named parameters
+ * (`contouring_lattice()` of the samples' field).  The outputs are cleared first.
+ */
+template <typename PointRange, typename PointOutRange, typename TriangleRange,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value &&
+                                      !std::is_same<PointRange, Regular_lattice_3>::value>>
+Contouring_statistics contour_point_set(const PointRange& points, PointOutRange& out_points,
+                                        TriangleRange& out_triangles,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
+  const Tangent_plane_signed_distance_3<Geom_traits> field(points, np);
+  const Contouring_statistics report = contour_signed_distance(field, out_points, out_triangles, np);
   if(report.empty_output)
     throw Empty_contour_error(report);
   return report;
@@ -922,12 +1121,13 @@ Contouring_report contour_point_set(const PointRange& points, PointOutRange& out
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
  * As above, into a `MutableFaceGraph` (e.g. `Surface_mesh`), which is cleared
- * first, with the same named parameters.  When no cube was skipped the soup is a closed 2-manifold by
+ * first (the package's rule for every output), with the same named parameters.  When no cube was skipped the soup is a closed 2-manifold by
  * construction (the table is watertight).  Skipped cubes leave holes, and two
  * holes can pinch a vertex (two skipped cubes diagonal around a lattice edge):
  * such vertices are duplicated (PMP::orient_polygon_soup) so that the mesh is
  * a valid, still consistently oriented, surface with border.
  *
+ * \param lattice the domain
  * \param points the samples
  * \param mesh the output (cleared first)
  * \param np an optional sequence of named parameters among the ones listed below
@@ -983,20 +1183,37 @@ Contouring_report contour_point_set(const PointRange& points, PointOutRange& out
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  */
-template <typename PointRange, typename PolygonMesh,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename PointRange, typename PolygonMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
           typename = std::enable_if_t<internal::Is_named_function_parameters<NamedParameters>::value>>
-Contouring_report contour_point_set(const PointRange& points, PolygonMesh& mesh,
-                                    const NamedParameters& np = parameters::default_values())
+Contouring_statistics contour_point_set(const Regular_lattice_3& lattice, const PointRange& points, PolygonMesh& mesh,
+                                        const NamedParameters& np = parameters::default_values())
 {
   typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
   std::vector<typename Geom_traits::Point_3> soup_points;
   std::vector<std::array<std::size_t, 3>> soup_triangles;
-  const Contouring_report report = contour_point_set(points, soup_points, soup_triangles, np);
-  clear(mesh);
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_triangles))
-    CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup_triangles);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup_triangles, mesh);
+  const Contouring_statistics report =
+      contour_point_set<ConcurrencyTag>(lattice, points, soup_points, soup_triangles, np);
+  internal::contour_soup_to_mesh(soup_points, soup_triangles, mesh);
+  return report;
+}
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ * \deprecated The former shape, the lattice from the named parameters.  The mesh is cleared first.
+ */
+template <typename PointRange, typename PolygonMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename = std::enable_if_t<internal::Is_named_function_parameters<NamedParameters>::value &&
+                                      !std::is_same<PointRange, Regular_lattice_3>::value>>
+Contouring_statistics contour_point_set(const PointRange& points, PolygonMesh& mesh,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
+  std::vector<typename Geom_traits::Point_3> soup_points;
+  std::vector<std::array<std::size_t, 3>> soup_triangles;
+  const Contouring_statistics report = contour_point_set(points, soup_points, soup_triangles, np);
+  internal::contour_soup_to_mesh(soup_points, soup_triangles, mesh);
   return report;
 }
 
