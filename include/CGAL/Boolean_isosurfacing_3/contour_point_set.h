@@ -475,7 +475,6 @@ Contouring_lattice default_contouring_lattice(const ContouringField_3& field, co
     cells[a] = (std::max)(std::int64_t(1), std::int64_t(n));
     lattice.cells[a] = cells[a];
   }
-  report.cell_size = r;
   lattice.r = r;
   return lattice;
 }

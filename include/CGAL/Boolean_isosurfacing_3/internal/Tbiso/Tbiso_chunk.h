@@ -8,7 +8,7 @@
 // soup (in-core drivers and the slab stream alike).
 
 #include <CGAL/Boolean_isosurfacing_3/internal/Exact_determinant_sign.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_tetrahedron.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Tbiso_tetrahedron.h>
 
 #include <algorithm>
 #include <array>
