@@ -140,10 +140,10 @@ Csg_run run_csg(const std::vector<Mesh>& meshes, const std::string& expression, 
   run.spacing = lattice.spacing();
   const auto np = BI::parameters::sharp_feature_output(&run.features, BI::parameters::sharp_features(sharp));
   if(sliver < 0)
-    run.statistics = BI::marching_cubes_csg<Tag>(meshes, BI::Boolean_expression::parse(expression), lattice,
+    run.statistics = BI::marching_cubes_csg<Tag>(lattice, meshes, BI::Boolean_expression::parse(expression),
                                                  run.points, run.triangles, np);
   else
-    run.statistics = BI::marching_cubes_csg<Tag>(meshes, BI::Boolean_expression::parse(expression), lattice,
+    run.statistics = BI::marching_cubes_csg<Tag>(lattice, meshes, BI::Boolean_expression::parse(expression),
                                                  run.points, run.triangles, BI::parameters::sliver_edge_length(sliver, np));
   PMP::polygon_soup_to_polygon_mesh(run.points, run.triangles, run.mesh);
   return run;
@@ -435,7 +435,7 @@ TEST(CsgFeatures, IsotropicRemeshingKeepsTheCreases)
   auto ecm = out.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
   auto vcm = out.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
   const BI::Marching_cubes_csg_statistics statistics =
-      BI::marching_cubes_csg(meshes, BI::Boolean_expression::parse("A & !B"), lattice, out,
+      BI::marching_cubes_csg(lattice, meshes, BI::Boolean_expression::parse("A & !B"), out,
                              BI::parameters::feature_angle(30.0).edge_is_constrained_map(ecm).vertex_is_constrained_map(vcm));
   std::size_t marked = 0, corners = 0;
   for(auto e : edges(out))

@@ -373,7 +373,7 @@ TEST(SlabRange, CsgRangesWeldToTheSequentialSurface)
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<std::size_t, 3>> triangles;
     // Slab ranges are plain Marching Cubes (sharp features are global).
-    BI::marching_cubes_csg(meshes, e, lattice, points, triangles, BI::parameters::sharp_features(false));
+    BI::marching_cubes_csg(lattice, meshes, e, points, triangles, BI::parameters::sharp_features(false));
     ASSERT_GT(triangles.size(), 100u);
     const std::size_t layers = lattice.number_of_points(2) - 1;
     for(std::size_t parts : {1, 2, 3, 4, 7})
