@@ -11,8 +11,8 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Mesh_triangles_3.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Mesh_triangles_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>

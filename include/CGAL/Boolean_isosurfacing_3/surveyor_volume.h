@@ -10,7 +10,7 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Huge_pages.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Tetrahedra_sum.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Surveyor_volume/Tetrahedra_sum.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
 #include <CGAL/Named_function_parameters.h>

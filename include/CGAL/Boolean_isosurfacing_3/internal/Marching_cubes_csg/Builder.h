@@ -15,7 +15,7 @@
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Csg_edge_point.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Csg_edge_point.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Collapse_short_edges.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>

@@ -8,7 +8,7 @@
 // double triangles, validating them on the way.
 
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
 #include <CGAL/boost/graph/helpers.h>
