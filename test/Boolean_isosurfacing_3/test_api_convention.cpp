@@ -7,6 +7,7 @@
 // CSG's `vertex_point_maps`.
 
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_to_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/contour_point_set.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
@@ -16,6 +17,8 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+
+#include "test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -86,6 +89,7 @@ TEST(ApiConvention, Csg_outputs_are_cleared_first)
   // A mesh output too: a mesh that already has a face is replaced.
   Mesh out = sphere(Point(5, 5, 5), 1.0);
   BI::marching_cubes_csg(c.lattice, c.meshes, c.expression, out);
+  EXPECT_TRUE(BI::test::is_closed_triangle_mesh(out));
   EXPECT_EQ(out.number_of_vertices(), points.size());
   EXPECT_EQ(out.number_of_faces(), triangles.size());
   // One statistics naming, and the deprecated names agree with it.
@@ -234,6 +238,45 @@ TEST(ApiConvention, Tbiso_outputs_cleared_callback_and_statistics)
                                               CGAL::parameters::callback(std::function<bool(double)>(Cancel_after{1, &seen}))),
                BI::Operation_cancelled_error);
   EXPECT_EQ(seen, 2);
+}
+
+TEST(ApiConvention, Tbiso_mesh_output_side_maps)
+{
+  typedef BI::Tetrahedral_grid_3<K> Grid;
+  const Grid grid = Grid::spanning(Point(-1, -1, -1), Point(1, 1, 1), {{20, 20, 20}});
+  const std::vector<std::function<double(const Point&)>> f{
+      [](const Point& p) { return std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))) - 0.7; },
+      [](const Point& p) { return p.x() - 0.1; }};
+  const BI::Scalar_fields fields = BI::sample_fields(grid, f);
+  const BI::Boolean_expression e = BI::Boolean_expression::parse("f0 & f1");
+  BI::Boolean_isosurface_soup<Point> soup;
+  BI::extract_boolean_isosurface(grid, fields, e, soup);
+  const BI::Crease_network creases = BI::extract_crease_network(soup);
+  Mesh mesh = sphere(Point(5, 5, 5), 1.0); // replaced: outputs are cleared first
+  auto label = mesh.add_property_map<Mesh::Face_index, int>("f:label", 99).first;
+  auto crease = mesh.add_property_map<Mesh::Edge_index, bool>("e:c", false).first;
+  auto corner = mesh.add_property_map<Mesh::Vertex_index, bool>("v:c", false).first;
+  BI::extract_boolean_isosurface(
+      grid, fields, e, mesh,
+      CGAL::parameters::face_patch_map(label).edge_is_constrained_map(crease).vertex_is_constrained_map(corner));
+  ASSERT_EQ(mesh.number_of_faces(), soup.polygons.size());
+  ASSERT_EQ(mesh.number_of_vertices(), soup.points.size());
+  std::size_t on_plane = 0, marked = 0, corners = 0, expected = 0;
+  for(const auto fd : mesh.faces())
+  {
+    EXPECT_EQ(label[fd], soup.face_fields[std::size_t(fd)]);
+    on_plane += label[fd] == 1 ? 1 : 0;
+  }
+  for(const auto ed : mesh.edges())
+    marked += crease[ed] ? 1 : 0;
+  for(const auto vd : mesh.vertices())
+    corners += corner[vd] ? 1 : 0;
+  for(const auto& line : creases.polylines)
+    expected += line.size() - 1;
+  EXPECT_GT(on_plane, 0u);
+  EXPECT_GT(marked, 10u); // the circle where the plane cuts the sphere
+  EXPECT_EQ(marked, expected);
+  EXPECT_EQ(corners, creases.corners.size());
 }
 
 TEST(ApiConvention, Surveyor_volume_takes_a_concurrency_tag)

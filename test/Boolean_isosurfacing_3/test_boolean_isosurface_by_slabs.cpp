@@ -9,6 +9,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,13 +29,7 @@ typedef std::function<double(const Point&)> Field;
 
 namespace {
 
-Field sphere(double cx, double cy, double cz, double r)
-{
-  return [=](const Point& p) {
-    const double x = p.x() - cx, y = p.y() - cy, z = p.z() - cz;
-    return std::sqrt(x * x + y * y + z * z) - r;
-  };
-}
+Field sphere(double cx, double cy, double cz, double r) { return BI::test::sphere_field<Point>(cx, cy, cz, r); }
 
 struct Slab_case
 {

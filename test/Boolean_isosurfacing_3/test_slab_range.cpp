@@ -17,6 +17,8 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -34,13 +36,7 @@ typedef std::function<double(const Point&)> Field;
 
 namespace {
 
-Field sphere(double cx, double cy, double cz, double r)
-{
-  return [=](const Point& p) {
-    const double x = p.x() - cx, y = p.y() - cy, z = p.z() - cz;
-    return std::sqrt(x * x + y * y + z * z) - r;
-  };
-}
+Field sphere(double cx, double cy, double cz, double r) { return BI::test::sphere_field<Point>(cx, cy, cz, r); }
 
 // The surface of `parts` simulated ranks, assembled as the MPI driver does.
 // `aligned`: ranges of whole slabs (as the driver makes them); else ranges

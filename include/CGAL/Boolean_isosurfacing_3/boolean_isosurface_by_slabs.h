@@ -25,6 +25,7 @@
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Grid_slab.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Slab_pipeline.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Tbiso_chunk.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Tbiso_tetrahedron.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
@@ -186,12 +187,7 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
                           : 1;
 
   // One slot per slab in flight: slab s uses slot s % slabs_in_flight.
-  struct Slot
-  {
-    std::size_t slab = 0;
-    std::vector<double> values;
-    internal::Tbiso_chunk chunk;
-  };
+  typedef internal::Tbiso_slab_slot Slot;
   std::vector<Slot> slots(slabs_in_flight);
   for(Slot& slot : slots)
     slot.values.reserve((std::min(slab, layers) + 3) * layer_size * N);
@@ -199,12 +195,9 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   // The three stages: read (in slab order: one file, read sequentially),
   // evaluate (any order, in parallel), weld and emit (in slab order).
   auto read = [&](Slot& slot) {
-    const std::size_t s = slot.slab;
-    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
-    const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
-    const std::size_t last_layer = std::min(n[2] - 1, k_end + 1);
+    const internal::Slab_window w(slot.slab, slab, layers);
     const auto read_start = std::chrono::steady_clock::now();
-    source.read(first_layer * layer_size, (last_layer - first_layer + 1) * layer_size, slot.values);
+    source.read(w.first_layer * layer_size, (w.last_layer - w.first_layer + 1) * layer_size, slot.values);
     stats.seconds_reading += internal::seconds_since(read_start);
     std::size_t held = 0;
     for(const Slot& other : slots)
@@ -212,23 +205,22 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
     stats.peak_field_values = std::max(stats.peak_field_values, held);
   };
   auto evaluate = [&](Slot& slot) {
-    const std::size_t s = slot.slab;
-    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
-    const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
+    const internal::Slab_window w(slot.slab, slab, layers);
     for(std::size_t k = 0; k < slot.values.size(); ++k)
       if(!std::isfinite(slot.values[k]))
         throw Non_finite_value_error("field " + std::to_string(k % N) + " has a non-finite value at vertex " +
-                                     std::to_string(first_layer * layer_size + k / N));
+                                     std::to_string(w.first_layer * layer_size + k / N));
     slot.chunk = internal::Tbiso_chunk();
-    internal::extract_grid_slab(grid, slot.values.data(), first_layer * layer_size, N, prototype, k_begin, k_end,
-                                slot.chunk);
+    internal::extract_grid_slab(grid, slot.values.data(), w.first_layer * layer_size, N, prototype, w.k_begin,
+                                w.k_end, slot.chunk);
   };
   std::unordered_map<internal::Tbiso_vertex_key, std::size_t, internal::Tbiso_vertex_key_hash> below, above;
   std::size_t next_index = 0;
   auto weld = [&](Slot& slot) {
     const auto weld_start = std::chrono::steady_clock::now();
     const std::size_t s = slot.slab;
-    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+    const internal::Slab_window w(s, slab, layers);
+    const std::size_t k_begin = w.k_begin, k_end = w.k_end;
     internal::Tbiso_chunk& chunk = slot.chunk;
     stats.number_of_evaluated_tetrahedra += chunk.evaluated;
     chunk.index.clear();
@@ -257,44 +249,7 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   };
 
   start = std::chrono::steady_clock::now();
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr(internal::is_parallel_tag<ConcurrencyTag>())
-  {
-    std::size_t next_slab = 0;
-    tbb::parallel_pipeline(
-        slabs_in_flight,
-        tbb::make_filter<void, Slot*>(tbb::filter_mode::serial_in_order,
-                                      [&](tbb::flow_control& control) -> Slot* {
-                                        if(next_slab == number_of_slabs)
-                                        {
-                                          control.stop();
-                                          return nullptr;
-                                        }
-                                        // Tokens finish in order, so slab s - slabs_in_flight is done.
-                                        Slot& slot = slots[next_slab % slabs_in_flight];
-                                        slot.slab = next_slab++;
-                                        read(slot);
-                                        return &slot;
-                                      }) &
-            tbb::make_filter<Slot*, Slot*>(tbb::filter_mode::parallel,
-                                           [&](Slot* slot) {
-                                             evaluate(*slot);
-                                             return slot;
-                                           }) &
-            tbb::make_filter<Slot*, void>(tbb::filter_mode::serial_in_order, [&](Slot* slot) { weld(*slot); }));
-  }
-  else
-#endif
-  {
-    for(std::size_t s = 0; s < number_of_slabs; ++s)
-    {
-      Slot& slot = slots[0];
-      slot.slab = s;
-      read(slot);
-      evaluate(slot);
-      weld(slot);
-    }
-  }
+  internal::run_slab_pipeline<ConcurrencyTag>(number_of_slabs, slots, read, evaluate, weld);
   stats.seconds_extraction = internal::seconds_since(start);
   stats.number_of_vertices = next_index;
   stats.seconds = internal::seconds_since(total_start);

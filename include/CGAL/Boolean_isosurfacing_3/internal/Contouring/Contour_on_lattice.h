@@ -134,54 +134,225 @@ inline void add_contouring_warnings(Contouring_statistics& report)
                               std::to_string(report.filled_holes) + " hole(s) filled");
 }
 
-// The contouring on `lattice` (appends to the outputs).
-template <typename ContouringField_3, typename PointOutRange, typename TriangleRange, typename NamedParameters>
-Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, const ContouringField_3& field,
-                                         PointOutRange& out_points, TriangleRange& out_triangles,
-                                         const NamedParameters& np)
+// The traversal of a contouring, one method per stage: the field at the
+// lattice points (cached), the seeds in the samples' cubes and the flood
+// through crossed faces, the walks down |f| from the other samples, the
+// triangles of the crossed cubes.  Counts go to `report`.
+template <typename ContouringField_3>
+class Contour_traversal
 {
+public:
   typedef typename ContouringField_3::Point_3 Point_3;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto total_start = std::chrono::steady_clock::now();
-  const Progress progress = progress_of(np);
-  Contouring_statistics report;
-  const auto& samples = field.points();
-  const double r = lattice.r;
-  const std::array<std::int64_t, 3> cells = lattice.cells;
-  report.origin = lattice.origin;
-  for(int a = 0; a < 3; ++a)
-    report.number_of_cells[a] = std::size_t(cells[a]);
-  report.cell_size = r;
-  // A signed distance is 1-Lipschitz: across a lattice edge of length r a true
-  // zero crossing changes f by at most r, plus the noise on both ends.  Hoppe's
-  // f is piecewise planar and jumps where the nearest centre changes; near the
-  // surface those jumps are small, but where two oppositely oriented sheets
-  // are closer than a neighbourhood (thin walls) the nearest centre alternates
-  // between them and f flips sign with a jump of twice the distance to the
-  // wall: "phantom" sheets that run away from the surface.  Such cubes are
-  // skipped (holes instead of phantom sheets).  Factor 3: slack for the plane
-  // switches near the surface; with 2 r, cactus.pts lost 4 genuine cubes.
-  const double max_jump = choose_parameter(get_parameter(np, internal_np::maximum_jump),
-                                           3 * r + 2 * field.noise_level());
-  const std::array<double, 3> origin = report.origin;
-  // One formula for every lattice point, so shared corners get identical coordinates.
-  auto lattice_point = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
-    return Point_3(origin[0] + double(i) * r, origin[1] + double(j) * r, origin[2] + double(k) * r);
-  };
 
-  // ---- field at lattice points, cached (NaN = undefined) -------------------
-  std::unordered_map<std::uint64_t, double> value_cache;
-  value_cache.reserve(4 * samples.size());
-  double field_seconds = 0;
-  auto value_at = [&](std::int64_t i, std::int64_t j, std::int64_t k) -> double {
+  Contour_traversal(const Contouring_lattice& lattice, const ContouringField_3& field, double max_jump,
+                    Contouring_statistics& report, const Progress& progress)
+    : field(field), samples(field.points()), r(lattice.r), cells(lattice.cells), origin(lattice.origin),
+      max_jump(max_jump), report(report), progress(progress)
+  {
+    value_cache.reserve(4 * samples.size());
+    visited.reserve(4 * samples.size());
+  }
+
+  // Seeds, first pass: the cubes that hold a sample.  With a cell of about
+  // the sample spacing f changes sign in most of them.
+  void seed_from_samples()
+  {
+    sample_xyz.resize(samples.size());
+    for(std::size_t s = 0; s < samples.size(); ++s)
+    {
+      for(int a = 0; a < 3; ++a)
+        sample_xyz[s][a] = CGAL::to_double(samples[s][a]);
+      const std::array<std::int64_t, 3> c = cube_of(sample_xyz[s]);
+      const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
+      if(visited.insert(key).second)
+        stack.push_back(key);
+    }
+    std::sort(stack.begin(), stack.end(), std::greater<std::uint64_t>()); // pop smallest first
+    flood();
+  }
+
+  // Second pass, for cells finer than the offset of the zero set from the
+  // samples (noise, curvature: sphere.pwn's zero set lies 1.4e-3 inside its
+  // samples): from each sample whose cube f does not cross, walk down |f|
+  // (along the gradient of the cube's trilinear interpolant, which is the
+  // tangent plane's normal where the cube's corners share a plane) in steps
+  // of half a cell, to the first crossed cube, at most rho + delta away (the
+  // largest distance at which f is defined).  A walk ends at an undefined
+  // cube, a jump, or a cube already crossed (its piece is traversed).
+  void walk_from_samples()
+  {
+    std::unordered_set<std::uint64_t> crossed_cubes(surface_cubes.begin(), surface_cubes.end());
+    const double walk_length = field.sampling_density() + field.noise_level() + r;
+    const int max_steps = int((std::min)(std::ceil(walk_length / (0.5 * r)), 1e6));
+    for(std::size_t s = 0; s < samples.size(); ++s)
+    {
+      if((s & 1023) == 0)
+        progress.report(0.5 * double(s) / double(samples.size()));
+      std::array<double, 3> q = sample_xyz[s];
+      std::array<std::int64_t, 3> c = cube_of(q);
+      if(crossed_cubes.count(internal::lattice_key(c[0], c[1], c[2])) != 0)
+        continue;
+      if(cube_state(c, values) != Cube_state::uncrossed) // undefined or a jump: nothing to follow
+        continue;
+      for(int step = 0; step < max_steps; ++step)
+      {
+        // The trilinear interpolant of the cube at q: value and gradient.
+        double u[3];
+        for(int a = 0; a < 3; ++a)
+          u[a] = (std::min)(1.0, (std::max)(0.0, (q[a] - origin[a]) / r - double(c[a])));
+        double value = 0, g[3] = {0, 0, 0};
+        for(int k = 0; k < 8; ++k)
+        {
+          double w[3], dw[3];
+          for(int a = 0; a < 3; ++a)
+          {
+            const bool upper = ((k >> a) & 1) != 0;
+            w[a] = upper ? u[a] : 1 - u[a];
+            dw[a] = upper ? 1.0 : -1.0;
+          }
+          value += values[k] * w[0] * w[1] * w[2];
+          g[0] += values[k] * dw[0] * w[1] * w[2];
+          g[1] += values[k] * w[0] * dw[1] * w[2];
+          g[2] += values[k] * w[0] * w[1] * dw[2];
+        }
+        const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if(!(norm > 0) || !std::isfinite(norm))
+          break;
+        // Half a cell towards f = 0 (g is per cell, so g / norm is a unit direction).
+        const double length = (value < 0 ? 0.5 : -0.5) * r / norm;
+        bool outside = false;
+        for(int a = 0; a < 3; ++a)
+        {
+          q[a] += length * g[a];
+          outside = outside || !(q[a] >= origin[a] && q[a] < origin[a] + double(cells[a]) * r);
+        }
+        if(outside)
+          break;
+        const std::array<std::int64_t, 3> next = cube_of(q);
+        if(next == c)
+          continue;
+        c = next;
+        const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
+        const Cube_state state = cube_state(c, values);
+        if(state == Cube_state::crossed)
+        {
+          if(visited.insert(key).second)
+          {
+            const std::size_t before = surface_cubes.size();
+            stack.push_back(key);
+            ++report.walk_seeds;
+            flood();
+            crossed_cubes.insert(surface_cubes.begin() + std::ptrdiff_t(before), surface_cubes.end());
+          }
+          break;
+        }
+        if(state != Cube_state::uncrossed)
+          break;
+      }
+    }
+
+  }
+
+  // The triangles of the crossed cubes, cube by cube in key order, appended;
+  // vertices are welded by lattice edge.  Returns the number of points.
+  template <typename PointOutRange, typename TriangleRange>
+  std::size_t triangulate(PointOutRange& out_points, TriangleRange& out_triangles)
+  {
+    std::sort(surface_cubes.begin(), surface_cubes.end());
+    report.surface_cubes = surface_cubes.size();
+    const Marching_cubes_table& table = Marching_cubes_table::instance();
+    std::unordered_map<std::uint64_t, std::size_t> edge_vertex;
+    edge_vertex.reserve(3 * surface_cubes.size());
+    std::size_t next_vertex = out_points.size();
+    for(const std::uint64_t key : surface_cubes)
+    {
+      const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+      cube_values(c, values); // cached
+      const unsigned code = internal::inside_cube_code(values);
+      const unsigned join = internal::asymptotic_decider_mask(values, code);
+      const unsigned ambiguous = ambiguous_face_mask(code);
+      for(int f = 0; f < 6; ++f)
+        if((ambiguous >> f) & 1u)
+        {
+          ++report.ambiguous_faces;
+          if((join >> f) & 1u)
+            ++report.joined_faces;
+        }
+      std::array<std::size_t, 12 + Marching_cubes_table::max_number_of_polygons> local;
+      local.fill(std::size_t(-1));
+      auto edge_point = [&](int e) -> Point_3 {
+        const std::array<int, 2> ends = cube_edge_corners(e);
+        const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
+        const Point_3 vi = lattice_point(c[0] + o0[0], c[1] + o0[1], c[2] + o0[2]);
+        const Point_3 vj = lattice_point(c[0] + o1[0], c[1] + o1[1], c[2] + o1[2]);
+        const double t = internal::edge_parameter(values[ends[0]], values[ends[1]]);
+        return vi + t * (vj - vi);
+      };
+      auto vertex = [&](unsigned v) -> std::size_t {
+        if(local[v] != std::size_t(-1))
+          return local[v];
+        if(Marching_cubes_table::is_centre_vertex(v))
+        {
+          // Private to this cube: the centroid of its polygon's edge points.
+          double x = 0, y = 0, z = 0;
+          const auto polygon = table.polygon(code, join, v - 12);
+          for(std::size_t i = 0; i < polygon.size(); ++i)
+          {
+            const Point_3 p = edge_point(polygon[i]);
+            x += CGAL::to_double(p.x());
+            y += CGAL::to_double(p.y());
+            z += CGAL::to_double(p.z());
+          }
+          const double m = double(polygon.size());
+          out_points.push_back(Point_3(x / m, y / m, z / m));
+          ++report.centre_vertices;
+          return local[v] = next_vertex++;
+        }
+        const int e = int(v);
+        const std::array<int, 3> o = cube_edge_origin_offset(e);
+        const std::uint64_t edge_key =
+          4 * internal::lattice_key(c[0] + o[0], c[1] + o[1], c[2] + o[2]) + std::uint64_t(cube_edge_axis(e));
+        auto inserted = edge_vertex.emplace(edge_key, next_vertex);
+        if(inserted.second)
+        {
+          out_points.push_back(edge_point(e));
+          ++next_vertex;
+        }
+        return local[v] = inserted.first->second;
+      };
+      for(const auto& t : table.triangles(code, join))
+      {
+        const std::size_t a = vertex(t[0]), b = vertex(t[1]), d = vertex(t[2]);
+        out_triangles.push_back(typename TriangleRange::value_type{a, b, d});
+        ++report.number_of_triangles;
+      }
+    }
+    return next_vertex;
+  }
+
+  double field_seconds() const { return m_field_seconds; }
+
+private:
+  // A cube is "crossed" when its 8 corners are defined, not all of one sign,
+  // and f does not jump along a sign-changing edge.
+  enum class Cube_state { undefined, undefined_crossed, uncrossed, jump, crossed };
+
+  // One formula for every lattice point, so shared corners get identical coordinates.
+  Point_3 lattice_point(std::int64_t i, std::int64_t j, std::int64_t k) const
+  {
+    return Point_3(origin[0] + double(i) * r, origin[1] + double(j) * r, origin[2] + double(k) * r);
+  }
+
+  // The field at a lattice point, cached (NaN = undefined).
+  double value_at(std::int64_t i, std::int64_t j, std::int64_t k)
+  {
     const std::uint64_t key = internal::lattice_key(i, j, k);
     auto found = value_cache.find(key);
     if(found != value_cache.end())
       return found->second;
     const auto start = std::chrono::steady_clock::now();
     const std::optional<double> f = field(lattice_point(i, j, k));
-    field_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_field_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++report.field_evaluations;
     double v = std::numeric_limits<double>::quiet_NaN();
     if(f)
@@ -190,8 +361,10 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
       ++report.undefined_points;
     value_cache.emplace(key, v);
     return v;
-  };
-  auto cube_values = [&](const std::array<std::int64_t, 3>& c, std::array<double, 8>& values) {
+  }
+
+  bool cube_values(const std::array<std::int64_t, 3>& c, std::array<double, 8>& values)
+  {
     bool defined = true;
     for(int k = 0; k < 8; ++k)
     {
@@ -199,13 +372,10 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
       defined = defined && !std::isnan(values[k]);
     }
     return defined;
-  };
+  }
 
-  // ---- traversal: seeds, then flood through crossed faces ----------------
-  // A cube is "crossed" when its 8 corners are defined, not all of one sign,
-  // and f does not jump along a sign-changing edge.
-  enum class Cube_state { undefined, undefined_crossed, uncrossed, jump, crossed };
-  auto cube_state = [&](const std::array<std::int64_t, 3>& c, std::array<double, 8>& v) {
+  Cube_state cube_state(const std::array<std::int64_t, 3>& c, std::array<double, 8>& v)
+  {
     const bool defined = cube_values(c, v);
     // Signs with undefined corners: only the defined ones can witness a crossing.
     bool has_in = false, has_out = false;
@@ -218,19 +388,19 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
     if(code == 0 || code == 0xFF)
       return Cube_state::uncrossed;
     return internal::has_jump_edge(v, code, max_jump) ? Cube_state::jump : Cube_state::crossed;
-  };
-  auto cube_of = [&](const std::array<double, 3>& p) {
+  }
+
+  std::array<std::int64_t, 3> cube_of(const std::array<double, 3>& p) const
+  {
     std::array<std::int64_t, 3> c;
     for(int a = 0; a < 3; ++a)
       c[a] = (std::min)(cells[a] - 1, (std::max)(std::int64_t(0), std::int64_t(std::floor((p[a] - origin[a]) / r))));
     return c;
-  };
-  std::vector<std::uint64_t> stack;
-  std::unordered_set<std::uint64_t> visited;
-  visited.reserve(4 * samples.size());
-  std::vector<std::uint64_t> surface_cubes;
-  std::array<double, 8> values;
-  auto flood = [&]() {
+  }
+
+  // Pops cubes off `stack` and pushes their unvisited neighbours across crossed faces.
+  void flood()
+  {
     while(!stack.empty())
     {
       const std::uint64_t key = stack.back();
@@ -271,171 +441,63 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
           stack.push_back(neighbour);
       }
     }
-  };
-  // Seeds, first pass: the cubes that hold a sample.  With a cell of about
-  // the sample spacing f changes sign in most of them.
-  std::vector<std::array<double, 3>> sample_xyz(samples.size());
-  for(std::size_t s = 0; s < samples.size(); ++s)
-  {
-    for(int a = 0; a < 3; ++a)
-      sample_xyz[s][a] = CGAL::to_double(samples[s][a]);
-    const std::array<std::int64_t, 3> c = cube_of(sample_xyz[s]);
-    const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
-    if(visited.insert(key).second)
-      stack.push_back(key);
-  }
-  std::sort(stack.begin(), stack.end(), std::greater<std::uint64_t>()); // pop smallest first
-  flood();
-  // Second pass, for cells finer than the offset of the zero set from the
-  // samples (noise, curvature: sphere.pwn's zero set lies 1.4e-3 inside its
-  // samples): from each sample whose cube f does not cross, walk down |f|
-  // (along the gradient of the cube's trilinear interpolant, which is the
-  // tangent plane's normal where the cube's corners share a plane) in steps
-  // of half a cell, to the first crossed cube, at most rho + delta away (the
-  // largest distance at which f is defined).  A walk ends at an undefined
-  // cube, a jump, or a cube already crossed (its piece is traversed).
-  std::unordered_set<std::uint64_t> crossed_cubes(surface_cubes.begin(), surface_cubes.end());
-  const double walk_length = field.sampling_density() + field.noise_level() + r;
-  const int max_steps = int((std::min)(std::ceil(walk_length / (0.5 * r)), 1e6));
-  for(std::size_t s = 0; s < samples.size(); ++s)
-  {
-    if((s & 1023) == 0)
-      progress.report(0.5 * double(s) / double(samples.size()));
-    std::array<double, 3> q = sample_xyz[s];
-    std::array<std::int64_t, 3> c = cube_of(q);
-    if(crossed_cubes.count(internal::lattice_key(c[0], c[1], c[2])) != 0)
-      continue;
-    if(cube_state(c, values) != Cube_state::uncrossed) // undefined or a jump: nothing to follow
-      continue;
-    for(int step = 0; step < max_steps; ++step)
-    {
-      // The trilinear interpolant of the cube at q: value and gradient.
-      double u[3];
-      for(int a = 0; a < 3; ++a)
-        u[a] = (std::min)(1.0, (std::max)(0.0, (q[a] - origin[a]) / r - double(c[a])));
-      double value = 0, g[3] = {0, 0, 0};
-      for(int k = 0; k < 8; ++k)
-      {
-        double w[3], dw[3];
-        for(int a = 0; a < 3; ++a)
-        {
-          const bool upper = ((k >> a) & 1) != 0;
-          w[a] = upper ? u[a] : 1 - u[a];
-          dw[a] = upper ? 1.0 : -1.0;
-        }
-        value += values[k] * w[0] * w[1] * w[2];
-        g[0] += values[k] * dw[0] * w[1] * w[2];
-        g[1] += values[k] * w[0] * dw[1] * w[2];
-        g[2] += values[k] * w[0] * w[1] * dw[2];
-      }
-      const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-      if(!(norm > 0) || !std::isfinite(norm))
-        break;
-      // Half a cell towards f = 0 (g is per cell, so g / norm is a unit direction).
-      const double length = (value < 0 ? 0.5 : -0.5) * r / norm;
-      bool outside = false;
-      for(int a = 0; a < 3; ++a)
-      {
-        q[a] += length * g[a];
-        outside = outside || !(q[a] >= origin[a] && q[a] < origin[a] + double(cells[a]) * r);
-      }
-      if(outside)
-        break;
-      const std::array<std::int64_t, 3> next = cube_of(q);
-      if(next == c)
-        continue;
-      c = next;
-      const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
-      const Cube_state state = cube_state(c, values);
-      if(state == Cube_state::crossed)
-      {
-        if(visited.insert(key).second)
-        {
-          const std::size_t before = surface_cubes.size();
-          stack.push_back(key);
-          ++report.walk_seeds;
-          flood();
-          crossed_cubes.insert(surface_cubes.begin() + std::ptrdiff_t(before), surface_cubes.end());
-        }
-        break;
-      }
-      if(state != Cube_state::uncrossed)
-        break;
-    }
   }
 
-  // ---- triangles, cube by cube in key order -------------------------------
-  std::sort(surface_cubes.begin(), surface_cubes.end());
-  report.surface_cubes = surface_cubes.size();
-  const Marching_cubes_table& table = Marching_cubes_table::instance();
-  std::unordered_map<std::uint64_t, std::size_t> edge_vertex;
-  edge_vertex.reserve(3 * surface_cubes.size());
-  std::size_t next_vertex = out_points.size();
-  const std::size_t first_vertex = next_vertex;
+  const ContouringField_3& field;
+  // The samples, by reference when `points()` returns one, else a copy.
+  typedef decltype(std::declval<const ContouringField_3&>().points()) Samples_result;
+  const std::conditional_t<std::is_reference<Samples_result>::value, Samples_result, std::decay_t<Samples_result>>
+      samples;
+  const double r;
+  const std::array<std::int64_t, 3> cells;
+  const std::array<double, 3> origin;
+  const double max_jump;
+  Contouring_statistics& report;
+  const Progress& progress;
+  std::unordered_map<std::uint64_t, double> value_cache;
+  double m_field_seconds = 0;
+  std::vector<std::uint64_t> stack;
+  std::unordered_set<std::uint64_t> visited;
+  std::vector<std::uint64_t> surface_cubes;
+  std::vector<std::array<double, 3>> sample_xyz;
+  std::array<double, 8> values;
+};
+
+// The contouring on `lattice` (appends to the outputs): the traversal, then
+// the repairs (bubbles removed, small holes closed).
+template <typename ContouringField_3, typename PointOutRange, typename TriangleRange, typename NamedParameters>
+Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, const ContouringField_3& field,
+                                         PointOutRange& out_points, TriangleRange& out_triangles,
+                                         const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto total_start = std::chrono::steady_clock::now();
+  const Progress progress = progress_of(np);
+  Contouring_statistics report;
+  const double r = lattice.r;
+  report.origin = lattice.origin;
+  for(int a = 0; a < 3; ++a)
+    report.number_of_cells[a] = std::size_t(lattice.cells[a]);
+  report.cell_size = r;
+  // A signed distance is 1-Lipschitz: across a lattice edge of length r a true
+  // zero crossing changes f by at most r, plus the noise on both ends.  Hoppe's
+  // f is piecewise planar and jumps where the nearest centre changes; near the
+  // surface those jumps are small, but where two oppositely oriented sheets
+  // are closer than a neighbourhood (thin walls) the nearest centre alternates
+  // between them and f flips sign with a jump of twice the distance to the
+  // wall: "phantom" sheets that run away from the surface.  Such cubes are
+  // skipped (holes instead of phantom sheets).  Factor 3: slack for the plane
+  // switches near the surface; with 2 r, cactus.pts lost 4 genuine cubes.
+  const double max_jump = choose_parameter(get_parameter(np, internal_np::maximum_jump),
+                                           3 * r + 2 * field.noise_level());
+  Contour_traversal<ContouringField_3> traversal(lattice, field, max_jump, report, progress);
+  traversal.seed_from_samples();
+  traversal.walk_from_samples();
+  const std::size_t first_vertex = out_points.size();
   const std::size_t first_triangle = out_triangles.size();
-  for(const std::uint64_t key : surface_cubes)
-  {
-    const std::array<std::int64_t, 3> c = internal::lattice_index(key);
-    cube_values(c, values); // cached
-    const unsigned code = internal::inside_cube_code(values);
-    const unsigned join = internal::asymptotic_decider_mask(values, code);
-    const unsigned ambiguous = ambiguous_face_mask(code);
-    for(int f = 0; f < 6; ++f)
-      if((ambiguous >> f) & 1u)
-      {
-        ++report.ambiguous_faces;
-        if((join >> f) & 1u)
-          ++report.joined_faces;
-      }
-    std::array<std::size_t, 12 + Marching_cubes_table::max_number_of_polygons> local;
-    local.fill(std::size_t(-1));
-    auto edge_point = [&](int e) -> Point_3 {
-      const std::array<int, 2> ends = cube_edge_corners(e);
-      const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
-      const Point_3 vi = lattice_point(c[0] + o0[0], c[1] + o0[1], c[2] + o0[2]);
-      const Point_3 vj = lattice_point(c[0] + o1[0], c[1] + o1[1], c[2] + o1[2]);
-      const double t = internal::edge_parameter(values[ends[0]], values[ends[1]]);
-      return vi + t * (vj - vi);
-    };
-    auto vertex = [&](unsigned v) -> std::size_t {
-      if(local[v] != std::size_t(-1))
-        return local[v];
-      if(Marching_cubes_table::is_centre_vertex(v))
-      {
-        // Private to this cube: the centroid of its polygon's edge points.
-        double x = 0, y = 0, z = 0;
-        const auto polygon = table.polygon(code, join, v - 12);
-        for(std::size_t i = 0; i < polygon.size(); ++i)
-        {
-          const Point_3 p = edge_point(polygon[i]);
-          x += CGAL::to_double(p.x());
-          y += CGAL::to_double(p.y());
-          z += CGAL::to_double(p.z());
-        }
-        const double m = double(polygon.size());
-        out_points.push_back(Point_3(x / m, y / m, z / m));
-        ++report.centre_vertices;
-        return local[v] = next_vertex++;
-      }
-      const int e = int(v);
-      const std::array<int, 3> o = cube_edge_origin_offset(e);
-      const std::uint64_t edge_key =
-        4 * internal::lattice_key(c[0] + o[0], c[1] + o[1], c[2] + o[2]) + std::uint64_t(cube_edge_axis(e));
-      auto inserted = edge_vertex.emplace(edge_key, next_vertex);
-      if(inserted.second)
-      {
-        out_points.push_back(edge_point(e));
-        ++next_vertex;
-      }
-      return local[v] = inserted.first->second;
-    };
-    for(const auto& t : table.triangles(code, join))
-    {
-      const std::size_t a = vertex(t[0]), b = vertex(t[1]), d = vertex(t[2]);
-      out_triangles.push_back(typename TriangleRange::value_type{a, b, d});
-      ++report.number_of_triangles;
-    }
-  }
+  std::size_t next_vertex = traversal.triangulate(out_points, out_triangles);
+  const double field_seconds = traversal.field_seconds();
   // Bubbles: Hoppe's f is piecewise planar and switches planes at the
   // Voronoi faces of the centres; in concave regions a lattice point can fall
   // on the wrong side of a plane that is not the one that matters, and
@@ -479,8 +541,7 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
   report.contouring_seconds = report.seconds_contouring;
   add_contouring_warnings(report);
   progress.report(1.0);
-  return report;
-}
+  return report;}
 
 } // namespace internal
 
