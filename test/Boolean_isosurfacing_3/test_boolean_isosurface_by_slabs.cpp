@@ -3,6 +3,7 @@
 // concurrency tags, with fields read from a raw file and the surface
 // streamed to a PLY file.
 
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_by_slabs.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/Boolean_isosurface_PLY_stream.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/scalar_fields.h>
