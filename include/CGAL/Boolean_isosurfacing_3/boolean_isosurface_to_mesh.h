@@ -4,6 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_TO_MESH_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_TO_MESH_H
 
+#include <CGAL/Boolean_isosurfacing_3/internal/clear_output_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
@@ -116,7 +117,7 @@ void boolean_isosurface_to_mesh(const Boolean_isosurface_soup<Point_3>& soup, Po
       if(v >= soup.points.size())
         throw Invalid_input_error("polygon " + std::to_string(p) + " refers to point " + std::to_string(v) +
                                   " but the soup has " + std::to_string(soup.points.size()) + " points");
-  CGAL::clear(mesh);
+  internal::clear_output_mesh(mesh);
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons))
     throw Invalid_input_error("cannot make a polygon mesh of the Boolean isosurface: " +
                               internal::describe_non_manifold_soup(soup) +

@@ -4,6 +4,7 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_MARCHING_CUBES_CSG_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_MARCHING_CUBES_CSG_H
 
+#include <CGAL/Boolean_isosurfacing_3/internal/clear_output_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_csg_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
@@ -209,7 +210,7 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
   const auto start = std::chrono::steady_clock::now();
   Marching_cubes_csg_statistics statistics = marching_cubes_csg<ConcurrencyTag>(
       lattice, meshes, expression, points, triangles, parameters::sharp_feature_output(&features, np));
-  CGAL::clear(output);
+  internal::clear_output_mesh(output);
   // As PMP::polygon_soup_to_polygon_mesh(), keeping the vertex of each point
   // for the feature maps.
   const auto vpm = get(CGAL::vertex_point, output);

@@ -6,6 +6,7 @@
 
 // The contouring of a field on a sparse lattice, and the lattice defaults.
 
+#include <CGAL/Boolean_isosurfacing_3/internal/clear_output_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/Contouring_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
@@ -554,7 +555,7 @@ template <typename Point, typename PolygonMesh>
 void contour_soup_to_mesh(std::vector<Point>& soup_points, std::vector<std::array<std::size_t, 3>>& soup_triangles,
                           PolygonMesh& mesh)
 {
-  CGAL::clear(mesh);
+  internal::clear_output_mesh(mesh);
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_triangles))
     CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup_triangles);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup_triangles, mesh);
