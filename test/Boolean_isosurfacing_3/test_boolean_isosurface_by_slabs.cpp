@@ -3,11 +3,14 @@
 // concurrency tags, with fields read from a raw file and the surface
 // streamed to a PLY file.
 
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_by_slabs.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/Boolean_isosurface_PLY_stream.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/scalar_fields.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include "test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -27,13 +30,7 @@ typedef std::function<double(const Point&)> Field;
 
 namespace {
 
-Field sphere(double cx, double cy, double cz, double r)
-{
-  return [=](const Point& p) {
-    const double x = p.x() - cx, y = p.y() - cy, z = p.z() - cz;
-    return std::sqrt(x * x + y * y + z * z) - r;
-  };
-}
+Field sphere(double cx, double cy, double cz, double r) { return BI::test::sphere_field<Point>(cx, cy, cz, r); }
 
 struct Slab_case
 {

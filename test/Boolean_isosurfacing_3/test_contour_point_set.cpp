@@ -76,7 +76,7 @@ struct Cube_run
 {
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  BI::Contouring_report report;
+  BI::Contouring_statistics report;
 };
 
 Cube_run contour_unit_cube(const std::array<double, 8>& corner_value)
@@ -91,7 +91,8 @@ Cube_run contour_unit_cube(const std::array<double, 8>& corner_value)
   Cube_run run;
   // No jump bound: the hand-made values are not a distance function.
   run.report = BI::contour_signed_distance(
-    field, run.points, run.triangles,
+    BI::contouring_lattice(field, BI::parameters::cell_size(1.0, BI::parameters::lattice_margin(
+                                     0.5, BI::parameters::maximum_jump(std::numeric_limits<double>::infinity())))), field, run.points, run.triangles,
     BI::parameters::cell_size(1.0, BI::parameters::lattice_margin(
                                      0.5, BI::parameters::maximum_jump(std::numeric_limits<double>::infinity()))));
   return run;
@@ -173,7 +174,7 @@ struct Reconstruction
 {
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  BI::Contouring_report report;
+  BI::Contouring_statistics report;
   double rho = 0, delta = 0;
   Mesh mesh;
 };
@@ -196,7 +197,7 @@ Reconstruction reconstruct(const std::vector<Point_3>& points, const NP& np)
   const BI::Tangent_plane_signed_distance_3<K> field(points, np);
   r.rho = field.sampling_density();
   r.delta = field.noise_level();
-  r.report = BI::contour_signed_distance(field, r.points, r.triangles, np);
+  r.report = BI::contour_signed_distance(BI::contouring_lattice(field, np), field, r.points, r.triangles, np);
   to_mesh(r);
   return r;
 }
@@ -213,7 +214,7 @@ Reconstruction reconstruct(const Samples& s, bool with_normals)
       indices, CGAL::parameters::point_map(CGAL::make_property_map(s.points)).normal_map(CGAL::make_property_map(s.normals)));
     r.rho = field.sampling_density();
     r.delta = field.noise_level();
-    r.report = BI::contour_signed_distance(field, r.points, r.triangles);
+    r.report = BI::contour_signed_distance(BI::contouring_lattice(field), field, r.points, r.triangles);
     to_mesh(r);
     return r;
   }
@@ -377,7 +378,7 @@ TEST(Seed_conventions, Plane_field_is_reproduced_exactly)
   field.f = [](const Point_3& p) -> std::optional<double> { return p.z() - 0.3; };
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  BI::contour_signed_distance(field, points, triangles, BI::parameters::cell_size(1.0));
+  BI::contour_signed_distance(BI::contouring_lattice(field, BI::parameters::cell_size(1.0)), field, points, triangles, BI::parameters::cell_size(1.0));
   ASSERT_FALSE(triangles.empty());
   for(const Point_3& p : points)
     EXPECT_NEAR(CGAL::to_double(p.z()), 0.3, 1e-15);
@@ -401,8 +402,8 @@ TEST(Seed_conventions, Bubbles_smaller_than_rho_are_removed)
     field.rho = rho;
     std::vector<Point_3> points;
     std::vector<Triangle> triangles;
-    const BI::Contouring_report report = BI::contour_signed_distance(field, points, triangles, np);
-    EXPECT_EQ(report.number_of_triangles, triangles.size());
+    const BI::Contouring_statistics report = BI::contour_signed_distance(BI::contouring_lattice(field, np), field, points, triangles, np);
+    EXPECT_EQ(report.number_of_faces, triangles.size());
     EXPECT_EQ(report.number_of_vertices, points.size());
     return std::make_pair(report.removed_closed_components, triangles.size());
   };
@@ -422,7 +423,7 @@ TEST(Seed_conventions, Bubbles_smaller_than_rho_are_removed)
   };
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  const BI::Contouring_report report = BI::contour_signed_distance(plane, points, triangles, BI::parameters::cell_size(1.0));
+  const BI::Contouring_statistics report = BI::contour_signed_distance(BI::contouring_lattice(plane, BI::parameters::cell_size(1.0)), plane, points, triangles, BI::parameters::cell_size(1.0));
   EXPECT_EQ(report.removed_closed_components, 0u);
   EXPECT_FALSE(triangles.empty());
 }
@@ -439,10 +440,11 @@ TEST(Seed_conventions, Jumps_of_f_are_not_surfaces)
   field.f = [](const Point_3& p) -> std::optional<double> { return p.x() < 2.5 ? 5.0 : -5.0; };
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  const BI::Contouring_report report = BI::contour_signed_distance(field, points, triangles, BI::parameters::cell_size(1.0));
+  const BI::Contouring_statistics report = BI::contour_signed_distance(BI::contouring_lattice(field, BI::parameters::cell_size(1.0)), field, points, triangles, BI::parameters::cell_size(1.0));
   EXPECT_TRUE(triangles.empty());
   EXPECT_GT(report.discontinuous_cubes, 0u);
-  BI::contour_signed_distance(field, points, triangles,
+  BI::contour_signed_distance(BI::contouring_lattice(field, BI::parameters::cell_size(1.0, BI::parameters::maximum_jump(
+                                                                 std::numeric_limits<double>::infinity()))), field, points, triangles,
                               BI::parameters::cell_size(1.0, BI::parameters::maximum_jump(
                                                                  std::numeric_limits<double>::infinity())));
   EXPECT_FALSE(triangles.empty());
@@ -544,8 +546,8 @@ TEST(Asymptotic_decider, Random_lattices_give_closed_oriented_manifolds)
     };
     std::vector<Point_3> points;
     std::vector<Triangle> triangles;
-    const BI::Contouring_report report = BI::contour_signed_distance(
-      field, points, triangles, BI::parameters::cell_size(1.0, BI::parameters::lattice_margin(0.5)));
+    const BI::Contouring_statistics report = BI::contour_signed_distance(
+      BI::contouring_lattice(field, BI::parameters::cell_size(1.0, BI::parameters::lattice_margin(0.5))), field, points, triangles, BI::parameters::cell_size(1.0, BI::parameters::lattice_margin(0.5)));
     ASSERT_FALSE(triangles.empty());
     EXPECT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(triangles));
     std::set<std::pair<std::size_t, std::size_t>> directed;
@@ -676,18 +678,25 @@ TEST(Reconstruct, Contour_point_set_overloads)
   // Points alone, default parameters, into a soup.
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  const BI::Contouring_report a = BI::contour_point_set(s.points, points, triangles);
-  EXPECT_EQ(a.number_of_triangles, triangles.size());
+  const BI::Regular_lattice_3 lattice = BI::contouring_lattice(BI::Tangent_plane_signed_distance_3<K>(s.points));
+  const BI::Contouring_statistics a = BI::contour_point_set(lattice, s.points, points, triangles);
+  EXPECT_EQ(a.number_of_faces, triangles.size());
+  EXPECT_EQ(a.number_of_vertices, points.size());
+  // The deprecated shape (the lattice from the named parameters) gives the same soup.
+  std::vector<Point_3> old_points;
+  std::vector<Triangle> old_triangles;
+  BI::contour_point_set(s.points, old_points, old_triangles);
+  EXPECT_EQ(old_triangles, triangles);
   EXPECT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(triangles));
   // Indices + point and normal maps + our parameters first, into a Surface_mesh.
   Mesh mesh;
-  const BI::Contouring_report b = BI::contour_point_set(
+  const BI::Contouring_statistics b = BI::contour_point_set(
     indices, mesh,
     BI::parameters::cells_along_longest_side(40, BI::parameters::number_of_neighbors(std::size_t(12)))
       .point_map(CGAL::make_property_map(s.points))
       .normal_map(CGAL::make_property_map(s.normals)));
   EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_EQ(mesh.number_of_faces(), b.number_of_triangles);
+  EXPECT_EQ(mesh.number_of_faces(), b.number_of_faces);
   EXPECT_GT(CGAL::to_double(BI::surveyor_volume(mesh)), 0);
   EXPECT_NEAR(b.cell_size, 2.0 / 40, 0.1 * 2.0 / 40); // the sample's extent is about 2
 }
@@ -744,7 +753,7 @@ TEST(Reconstruct, Thin_plate_planes_come_from_one_side)
   }
   EXPECT_EQ(interior, 2u * 41 * 41);
   Reconstruction r;
-  r.report = BI::contour_signed_distance(field, r.points, r.triangles);
+  r.report = BI::contour_signed_distance(BI::contouring_lattice(field), field, r.points, r.triangles);
   to_mesh(r);
   const Topology topo = topology(r.mesh);
   EXPECT_TRUE(topo.closed);
@@ -790,7 +799,7 @@ TEST(Orientation, Input_normals_that_do_not_point_outward_are_not_trusted)
     else
       EXPECT_EQ(field.input_normal_votes().second, normals == &outward ? 0u : 26u);
     Reconstruction r;
-    r.report = BI::contour_signed_distance(field, r.points, r.triangles);
+    r.report = BI::contour_signed_distance(BI::contouring_lattice(field), field, r.points, r.triangles);
     to_mesh(r);
     EXPECT_GT(CGAL::to_double(BI::surveyor_volume(r.mesh)), 0);
     if(!trusted)
@@ -818,7 +827,7 @@ TEST(Orientation, Cube_pwn_normals_are_rejected)
     indices, CGAL::parameters::point_map(CGAL::make_property_map(p)).normal_map(CGAL::make_property_map(n)));
   EXPECT_TRUE(field.input_normals_rejected());
   Reconstruction r;
-  r.report = BI::contour_signed_distance(field, r.points, r.triangles);
+  r.report = BI::contour_signed_distance(BI::contouring_lattice(field), field, r.points, r.triangles);
   to_mesh(r);
   PMP::keep_largest_connected_components(r.mesh, 1);
   r.mesh.collect_garbage();
@@ -1151,6 +1160,6 @@ TEST(Bad_input, Clear_errors)
   const Field field(s.points);
   std::vector<Point_3> out;
   std::vector<Triangle> tris;
-  EXPECT_THROW(BI::contour_signed_distance(field, out, tris, BI::parameters::cell_size(0.0)), BI::Invalid_input_error);
-  EXPECT_THROW(BI::contour_signed_distance(field, out, tris, BI::parameters::cell_size(1e-9)), BI::Invalid_input_error);
+  EXPECT_THROW(BI::contour_signed_distance(BI::contouring_lattice(field, BI::parameters::cell_size(0.0)), field, out, tris, BI::parameters::cell_size(0.0)), BI::Invalid_input_error);
+  EXPECT_THROW(BI::contour_signed_distance(BI::contouring_lattice(field, BI::parameters::cell_size(1e-9)), field, out, tris, BI::parameters::cell_size(1e-9)), BI::Invalid_input_error);
 }

@@ -89,7 +89,7 @@ Samples sample_mesh(const Mesh& mesh, std::size_t n, unsigned seed)
 
 struct Outcome
 {
-  BI::Contouring_report report;
+  BI::Contouring_statistics report;
   std::size_t split_vertices = 0; // non-manifold vertices of the soup (duplicated by orient_polygon_soup)
   std::size_t remaining_split = 0; // ... left in the output (split here, not by the repair)
   bool closed = false;
@@ -110,7 +110,7 @@ Outcome contour(const Samples& s, const Mesh* original, const NP& np)
     indices, CGAL::parameters::point_map(CGAL::make_property_map(s.points)).normal_map(CGAL::make_property_map(s.normals)));
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  o.report = BI::contour_signed_distance(field, points, triangles, np);
+  o.report = BI::contour_signed_distance(BI::contouring_lattice(field, np), field, points, triangles, np);
   const std::size_t before = points.size();
   if(!PMP::is_polygon_soup_a_polygon_mesh(triangles))
     PMP::orient_polygon_soup(points, triangles);
@@ -140,7 +140,7 @@ void print(const std::string& what, const Outcome& o)
   std::cout << "[ measured ] " << what << ": closed " << o.closed << ", non-manifold vertices " << o.split_vertices
             << ", components " << o.components << ", chi " << o.euler << ", border cycles " << o.border_cycles
             << ", Hausdorff " << o.hausdorff_percent << " % of the diagonal, cell " << o.report.cell_size
-            << ", triangles " << o.report.number_of_triangles << ", skipped (undefined) " << o.report.skipped_cubes
+            << ", triangles " << o.report.number_of_faces << ", skipped (undefined) " << o.report.skipped_cubes
             << ", skipped (jump) " << o.report.discontinuous_cubes << ", walk seeds " << o.report.walk_seeds
             << std::endl;
 }
@@ -196,10 +196,10 @@ TEST(Traversal, Cells_finer_than_the_offset_of_the_zero_set_still_give_the_surfa
   ASSERT_GT(cell, 0);
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  const BI::Contouring_report report =
-    BI::contour_signed_distance(field, points, triangles, BI::parameters::cell_size(cell));
+  const BI::Contouring_statistics report =
+    BI::contour_signed_distance(BI::contouring_lattice(field, BI::parameters::cell_size(cell)), field, points, triangles, BI::parameters::cell_size(cell));
   std::cout << "[ measured ] offsets " << min_offset << " .. " << max_offset << ", cell " << cell << ", "
-            << report.number_of_triangles << " triangles, " << report.walk_seeds << " walk seeds" << std::endl;
+            << report.number_of_faces << " triangles, " << report.walk_seeds << " walk seeds" << std::endl;
   EXPECT_GE(report.walk_seeds, 1u);
   EXPECT_FALSE(report.empty_output);
   ASSERT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(triangles));
@@ -226,10 +226,10 @@ TEST(Traversal, Empty_output_is_reported)
   none.f = [](const Point_3&) -> std::optional<double> { return 1.0; };
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
-  EXPECT_TRUE(BI::contour_signed_distance(none, points, triangles, BI::parameters::cell_size(0.5)).empty_output);
+  EXPECT_TRUE(BI::contour_signed_distance(BI::contouring_lattice(none, BI::parameters::cell_size(0.5)), none, points, triangles, BI::parameters::cell_size(0.5)).empty_output);
   Analytic_field plane = none;
   plane.f = [](const Point_3& p) -> std::optional<double> { return p.z() - 0.3; };
-  EXPECT_FALSE(BI::contour_signed_distance(plane, points, triangles, BI::parameters::cell_size(0.5)).empty_output);
+  EXPECT_FALSE(BI::contour_signed_distance(BI::contouring_lattice(plane, BI::parameters::cell_size(0.5)), plane, points, triangles, BI::parameters::cell_size(0.5)).empty_output);
 
   Mesh sphere;
   BI::make_icosphere(sphere, Point_3(0, 0, 0), 1.0, 3);

@@ -34,6 +34,8 @@
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -63,16 +65,7 @@ const double pi = 3.14159265358979323846;
 
 // ------------------------------------------------------------------ meshes
 
-Mesh make_box(const Point& low, const Point& high)
-{
-  Mesh mesh;
-  CGAL::make_hexahedron(Point(low.x(), low.y(), low.z()), Point(high.x(), low.y(), low.z()),
-                        Point(high.x(), high.y(), low.z()), Point(low.x(), high.y(), low.z()),
-                        Point(low.x(), high.y(), high.z()), Point(low.x(), low.y(), high.z()),
-                        Point(high.x(), low.y(), high.z()), Point(high.x(), high.y(), high.z()), mesh);
-  PMP::triangulate_faces(mesh);
-  return mesh;
-}
+Mesh make_box(const Point& low, const Point& high) { return BI::test::make_box<Mesh>(low, high); }
 
 // A prism with a regular `segments`-gon as section, axis along z.
 Mesh make_cylinder(const Point& base, double radius, double height, int segments)
@@ -140,10 +133,10 @@ Csg_run run_csg(const std::vector<Mesh>& meshes, const std::string& expression, 
   run.spacing = lattice.spacing();
   const auto np = BI::parameters::sharp_feature_output(&run.features, BI::parameters::sharp_features(sharp));
   if(sliver < 0)
-    run.statistics = BI::marching_cubes_csg<Tag>(meshes, BI::Boolean_expression::parse(expression), lattice,
+    run.statistics = BI::marching_cubes_csg<Tag>(lattice, meshes, BI::Boolean_expression::parse(expression),
                                                  run.points, run.triangles, np);
   else
-    run.statistics = BI::marching_cubes_csg<Tag>(meshes, BI::Boolean_expression::parse(expression), lattice,
+    run.statistics = BI::marching_cubes_csg<Tag>(lattice, meshes, BI::Boolean_expression::parse(expression),
                                                  run.points, run.triangles, BI::parameters::sliver_edge_length(sliver, np));
   PMP::polygon_soup_to_polygon_mesh(run.points, run.triangles, run.mesh);
   return run;
@@ -274,8 +267,7 @@ void check_valid(const Csg_run& run, const std::string& what)
   SCOPED_TRACE(what);
   ASSERT_FALSE(run.triangles.empty());
   EXPECT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(run.triangles));
-  EXPECT_TRUE(CGAL::is_closed(run.mesh));
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(run.mesh));
+  EXPECT_TRUE(BI::test::is_closed_triangle_mesh(run.mesh));
   EXPECT_EQ(run.mesh.number_of_vertices(), run.points.size());
   EXPECT_FALSE(PMP::does_self_intersect(run.mesh));
   double smallest = std::numeric_limits<double>::infinity();
@@ -284,6 +276,32 @@ void check_valid(const Csg_run& run, const std::string& what)
   // Measured smallest: 8e-9 r^2 (box & rotated box, 32 cells): a sliver the
   // collapse did not remove, but no zero-area face.
   EXPECT_GT(smallest, 1e-10 * run.spacing * run.spacing) << "a (nearly) zero-area triangle";
+}
+
+// The feature run of `expression` on `cells` cells, checked valid, with its
+// sharp edges compared to plain Marching Cubes on the same lattice: printed,
+// and the feature output must be closer to the exact sharp edges.
+Csg_run measure_creases(const std::vector<Mesh>& meshes, const std::string& expression, std::size_t cells,
+                        const std::vector<Segment>& sharp, const std::string& what)
+{
+  Csg_run run = run_csg(meshes, expression, cells);
+  const double r = run.spacing;
+  check_valid(run, what);
+  const Distances covered = sample_distances(samples_of(sharp, r), crease_segments(run), r);
+  const Distances surface = surface_distances(samples_of(sharp, r), run);
+  const Csg_run plain = run_csg(meshes, expression, cells, false);
+  const Distances plain_surface = surface_distances(samples_of(sharp, r), plain);
+  std::cout << what << ", " << cells << " cells: sharp edges to the output max " << surface.max << " r, p95 "
+            << surface.p95 << " r (plain MC " << plain_surface.max << ", " << plain_surface.p95
+            << "); to crease edges max " << covered.max << " r, p95 " << covered.p95 << " r; corners "
+            << run.features.corner_vertices.size() << "; plain feature polygons "
+            << run.statistics.plain_feature_polygons << "\n";
+  // Measured: the p95 is 0.49-0.73 of plain MC's (the crease polylines
+  // have gaps where a cube keeps its plain triangulation); far from the
+  // 0.1 r goal, see features.md.
+  EXPECT_LT(surface.p95, 0.8 * plain_surface.p95);
+  EXPECT_LE(surface.max, plain_surface.max);
+  return run;
 }
 
 // ------------------------------------------------------------------ exact answers
@@ -336,23 +354,8 @@ TEST(CsgFeatures, BoxIntersectedWithARotatedBox)
   for(std::size_t cells : {16, 32, 64})
   {
     SCOPED_TRACE("cells " + std::to_string(cells));
-    const Csg_run run = run_csg({a, b}, "A & B", cells);
+    const Csg_run run = measure_creases({a, b}, "A & B", cells, sharp, "box & rotated box");
     const double r = run.spacing;
-    check_valid(run, "box & rotated box");
-    const Distances covered = sample_distances(samples_of(sharp, r), crease_segments(run), r);
-    const Distances surface = surface_distances(samples_of(sharp, r), run);
-    const Csg_run plain = run_csg({a, b}, "A & B", cells, false);
-    const Distances plain_surface = surface_distances(samples_of(sharp, r), plain);
-    std::cout << "box & rotated box, " << cells << " cells: sharp edges to the output max " << surface.max << " r, p95 "
-              << surface.p95 << " r (plain MC " << plain_surface.max << ", " << plain_surface.p95
-              << "); to crease edges max " << covered.max << " r, p95 " << covered.p95 << " r; corners "
-              << run.features.corner_vertices.size() << "; plain feature polygons "
-              << run.statistics.plain_feature_polygons << "\n";
-    // Measured: the p95 is 0.49-0.73 of plain MC's (the crease polylines
-    // have gaps where a cube keeps its plain triangulation); far from the
-    // 0.1 r goal, see features.md.
-    EXPECT_LT(surface.p95, 0.8 * plain_surface.p95);
-    EXPECT_LE(surface.max, plain_surface.max);
     // Crease edges are on the exact sharp edges (most of them: a few flips
     // join two feature vertices across a face near a corner).
     const Distances on_sharp = sample_distances(samples_of(crease_segments(run), r), sharp, r);
@@ -375,23 +378,7 @@ TEST(CsgFeatures, CylinderUnitedWithABox)
   for(std::size_t cells : {16, 32, 64})
   {
     SCOPED_TRACE("cells " + std::to_string(cells));
-    const Csg_run run = run_csg({a, b}, "A | B", cells);
-    const double r = run.spacing;
-    check_valid(run, "cylinder | box");
-    const Distances covered = sample_distances(samples_of(sharp, r), crease_segments(run), r);
-    const Distances surface = surface_distances(samples_of(sharp, r), run);
-    const Csg_run plain = run_csg({a, b}, "A | B", cells, false);
-    const Distances plain_surface = surface_distances(samples_of(sharp, r), plain);
-    std::cout << "cylinder | box, " << cells << " cells: sharp edges to the output max " << surface.max << " r, p95 "
-              << surface.p95 << " r (plain MC " << plain_surface.max << ", " << plain_surface.p95
-              << "); to crease edges max " << covered.max << " r, p95 " << covered.p95 << " r; corners "
-              << run.features.corner_vertices.size() << "; plain feature polygons "
-              << run.statistics.plain_feature_polygons << "\n";
-    // Measured: the p95 is 0.49-0.73 of plain MC's (the crease polylines
-    // have gaps where a cube keeps its plain triangulation); far from the
-    // 0.1 r goal, see features.md.
-    EXPECT_LT(surface.p95, 0.8 * plain_surface.p95);
-    EXPECT_LE(surface.max, plain_surface.max);
+    const Csg_run run = measure_creases({a, b}, "A | B", cells, sharp, "cylinder | box");
     errors.push_back(std::abs(PMP::volume(run.mesh) - exact_volume) / exact_volume);
   }
   std::cout << "volume errors " << errors[0] << " " << errors[1] << " " << errors[2] << "\n";
@@ -435,7 +422,7 @@ TEST(CsgFeatures, IsotropicRemeshingKeepsTheCreases)
   auto ecm = out.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
   auto vcm = out.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
   const BI::Marching_cubes_csg_statistics statistics =
-      BI::marching_cubes_csg(meshes, BI::Boolean_expression::parse("A & !B"), lattice, out,
+      BI::marching_cubes_csg(lattice, meshes, BI::Boolean_expression::parse("A & !B"), out,
                              BI::parameters::feature_angle(30.0).edge_is_constrained_map(ecm).vertex_is_constrained_map(vcm));
   std::size_t marked = 0, corners = 0;
   for(auto e : edges(out))

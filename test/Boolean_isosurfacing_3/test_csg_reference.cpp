@@ -122,7 +122,7 @@ Csg_run mc_csg(const Mesh& a, const Mesh& b, Operation op, std::size_t cells)
   // Plain Marching Cubes: the convergence claims below are the plain
   // method's (with sharp features, test_csg_features.cpp; the errors there
   // are smaller but do not always shrink monotonically, see features.md).
-  BI::marching_cubes_csg(meshes, expression(op), lattice, run.mesh, BI::parameters::sharp_features(false));
+  BI::marching_cubes_csg(lattice, meshes, expression(op), run.mesh, BI::parameters::sharp_features(false));
   return run;
 }
 

@@ -179,7 +179,7 @@ Soup run_csg(const std::vector<const Mesh*>& meshes, const BI::Boolean_expressio
              bool sharp = true)
 {
   Soup soup;
-  soup.statistics = BI::marching_cubes_csg<Tag>(refs(meshes), e, lattice, soup.points, soup.triangles,
+  soup.statistics = BI::marching_cubes_csg<Tag>(lattice, refs(meshes), e, soup.points, soup.triangles,
                                                 BI::parameters::sharp_features(sharp));
   return soup;
 }
@@ -188,8 +188,8 @@ Soup run_csg(const std::vector<const Mesh*>& meshes, const BI::Boolean_expressio
 double check_output(const Soup& soup, const std::string& what, bool expect_distinct_points = true)
 {
   SCOPED_TRACE(what);
-  EXPECT_EQ(soup.statistics.output_vertices, soup.points.size());
-  EXPECT_EQ(soup.statistics.output_triangles, soup.triangles.size());
+  EXPECT_EQ(soup.statistics.number_of_vertices, soup.points.size());
+  EXPECT_EQ(soup.statistics.number_of_faces, soup.triangles.size());
   EXPECT_EQ(soup.statistics.boundary_points_inside, 0u);
   if(soup.triangles.empty())
     return 0;
@@ -927,30 +927,34 @@ TEST(McCsgApi, SurfaceMeshOutputVectorTrianglesProgressAndAppending)
 
   std::vector<Point> points;
   std::vector<Triangle> triangles;
-  BI::marching_cubes_csg(meshes, e, lattice, points, triangles);
+  BI::marching_cubes_csg(lattice, meshes, e, points, triangles);
 
   Mesh output;
   std::vector<double> fractions;
   const BI::Marching_cubes_csg_statistics s = BI::marching_cubes_csg(
-      meshes, e, lattice, output, BI::parameters::progress([&](double f) { fractions.push_back(f); }));
+      lattice, meshes, e, output, CGAL::parameters::callback(std::function<bool(double)>([&](double f) {
+        fractions.push_back(f);
+        return true;
+      })));
   EXPECT_EQ(output.number_of_vertices(), points.size());
   EXPECT_EQ(output.number_of_faces(), triangles.size());
-  EXPECT_EQ(s.output_triangles, triangles.size());
+  EXPECT_EQ(s.number_of_faces, triangles.size());
+  EXPECT_EQ(s.number_of_vertices, points.size());
   EXPECT_TRUE(CGAL::is_closed(output));
   ASSERT_FALSE(fractions.empty());
   EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
   EXPECT_EQ(fractions.back(), 1.0);
   EXPECT_GE(fractions.front(), 0.0);
 
-  // Polygon soup of vectors, appended after existing content.
+  // Polygon soup of vectors; the outputs are cleared first (the package's rule).
   std::vector<Point> more_points(3, Point(0, 0, 0));
-  std::vector<std::vector<std::size_t>> polygons;
-  BI::marching_cubes_csg(meshes, e, lattice, more_points, polygons);
-  ASSERT_EQ(more_points.size(), points.size() + 3);
+  std::vector<std::vector<std::size_t>> polygons(2, std::vector<std::size_t>{7, 8, 9});
+  BI::marching_cubes_csg(lattice, meshes, e, more_points, polygons);
+  ASSERT_EQ(more_points.size(), points.size());
   ASSERT_EQ(polygons.size(), triangles.size());
   for(std::size_t t = 0; t < triangles.size(); ++t)
     for(int v = 0; v < 3; ++v)
-      EXPECT_EQ(polygons[t][v], triangles[t][v] + 3);
+      EXPECT_EQ(polygons[t][v], triangles[t][v]);
   EXPECT_GT(s.lattice_points, 0u);
   EXPECT_GT(s.crossings, 0u);
   EXPECT_GE(s.seconds_classification, 0.0);
@@ -969,8 +973,7 @@ TEST(McCsgApi, PolyhedronInputGivesTheSameOutput)
   const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(bbox_of({&a, &b}), 24);
   const BI::Boolean_expression e = BI::Boolean_expression::difference();
   Soup from_polyhedra;
-  BI::marching_cubes_csg(std::vector<std::reference_wrapper<const Polyhedron>>{std::cref(pa), std::cref(pb)}, e,
-                         lattice, from_polyhedra.points, from_polyhedra.triangles);
+  BI::marching_cubes_csg(lattice, std::vector<std::reference_wrapper<const Polyhedron>>{std::cref(pa), std::cref(pb)}, e, from_polyhedra.points, from_polyhedra.triangles);
   EXPECT_FALSE(from_polyhedra.triangles.empty());
   // Same combinatorics; the positions may differ in the last bits (the
   // copy may start the faces at another vertex, which changes the order of
@@ -988,7 +991,7 @@ TEST(McCsgApi, ComplementIsReportedAsOpenAtTheLatticeBoundary)
   const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(PMP::bbox(a), 16);
   std::vector<Point> points;
   std::vector<Triangle> triangles;
-  const auto s = BI::marching_cubes_csg(std::vector<Mesh>{a}, BI::Boolean_expression::parse("!A"), lattice, points,
+  const auto s = BI::marching_cubes_csg(lattice, std::vector<Mesh>{a}, BI::Boolean_expression::parse("!A"), points,
                                         triangles);
   const auto& n = lattice.number_of_points();
   EXPECT_EQ(s.boundary_points_inside, n[0] * n[1] * n[2] - (n[0] - 2) * (n[1] - 2) * (n[2] - 2));
@@ -1042,7 +1045,7 @@ TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
   std::vector<Point> points;
   std::vector<Triangle> triangles;
   const BI::Marching_cubes_csg_statistics off = BI::marching_cubes_csg(
-      refs({&outer, &inner}), BI::Boolean_expression::difference(), BI::Regular_lattice_3::enclosing(box, 1.0 / 16),
+      BI::Regular_lattice_3::enclosing(box, 1.0 / 16), refs({&outer, &inner}), BI::Boolean_expression::difference(),
       points, triangles, BI::parameters::resolution_check(false));
   EXPECT_EQ(off.result_intervals, 0u);
 }
@@ -1077,35 +1080,35 @@ TEST(McCsgBadInput, SpecificExceptionsWithClearMessages)
   Mesh open = sphere;
   CGAL::Euler::remove_face(halfedge(*faces(open).begin(), open), open);
   expect_error<BI::Open_mesh_error>(
-      [&] { BI::marching_cubes_csg(std::vector<Mesh>{sphere, open}, two, lattice, points, triangles); },
+      [&] { BI::marching_cubes_csg(lattice, std::vector<Mesh>{sphere, open}, two, points, triangles); },
       "mesh #1 is not closed");
 
   expect_error<BI::Empty_input_error>(
-      [&] { BI::marching_cubes_csg(std::vector<Mesh>{sphere, Mesh()}, two, lattice, points, triangles); },
+      [&] { BI::marching_cubes_csg(lattice, std::vector<Mesh>{sphere, Mesh()}, two, points, triangles); },
       "mesh #1 has no face");
   expect_error<BI::Empty_input_error>(
-      [&] { BI::marching_cubes_csg(std::vector<Mesh>{}, BI::Boolean_expression(), lattice, points, triangles); },
+      [&] { BI::marching_cubes_csg(lattice, std::vector<Mesh>{}, BI::Boolean_expression(), points, triangles); },
       "no input mesh");
 
   Mesh nan_mesh = sphere;
   nan_mesh.point(*vertices(nan_mesh).begin()) = Point(std::nan(""), 0, 0);
   expect_error<BI::Non_finite_value_error>(
-      [&] { BI::marching_cubes_csg(std::vector<Mesh>{nan_mesh, sphere}, two, lattice, points, triangles); },
+      [&] { BI::marching_cubes_csg(lattice, std::vector<Mesh>{nan_mesh, sphere}, two, points, triangles); },
       "mesh #0: vertex #0 has a non-finite coordinate");
 
   Mesh quad;
   CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(0, 1, 1),
                         Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), quad);
   expect_error<BI::Non_triangle_face_error>(
-      [&] { BI::marching_cubes_csg(std::vector<Mesh>{quad}, BI::Boolean_expression::single(0, 1), lattice, points, triangles); },
+      [&] { BI::marching_cubes_csg(lattice, std::vector<Mesh>{quad}, BI::Boolean_expression::single(0, 1), points, triangles); },
       "is not a triangle");
 
   expect_error<BI::Invalid_input_error>(
-      [&] { BI::marching_cubes_csg(std::vector<Mesh>{sphere}, two, lattice, points, triangles); },
+      [&] { BI::marching_cubes_csg(lattice, std::vector<Mesh>{sphere}, two, points, triangles); },
       "has 2 variable(s) but 1 mesh(es)");
   expect_error<BI::Invalid_input_error>(
       [&] {
-        BI::marching_cubes_csg(std::vector<Mesh>{sphere, sphere, sphere}, two, lattice, points, triangles);
+        BI::marching_cubes_csg(lattice, std::vector<Mesh>{sphere, sphere, sphere}, two, points, triangles);
       },
       "has 2 variable(s) but 3 mesh(es)");
 
@@ -1114,7 +1117,7 @@ TEST(McCsgBadInput, SpecificExceptionsWithClearMessages)
   // The memory limit.
   expect_error<BI::Lattice_too_large_error>(
       [&] {
-        BI::marching_cubes_csg(std::vector<Mesh>{sphere}, BI::Boolean_expression::single(0, 1), lattice, points,
+        BI::marching_cubes_csg(lattice, std::vector<Mesh>{sphere}, BI::Boolean_expression::single(0, 1), points,
                                triangles, BI::parameters::max_memory_bytes(std::size_t(1000)));
       },
       "max_memory_bytes");

@@ -17,6 +17,8 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -34,13 +36,7 @@ typedef std::function<double(const Point&)> Field;
 
 namespace {
 
-Field sphere(double cx, double cy, double cz, double r)
-{
-  return [=](const Point& p) {
-    const double x = p.x() - cx, y = p.y() - cy, z = p.z() - cz;
-    return std::sqrt(x * x + y * y + z * z) - r;
-  };
-}
+Field sphere(double cx, double cy, double cz, double r) { return BI::test::sphere_field<Point>(cx, cy, cz, r); }
 
 // The surface of `parts` simulated ranks, assembled as the MPI driver does.
 // `aligned`: ranges of whole slabs (as the driver makes them); else ranges
@@ -373,7 +369,7 @@ TEST(SlabRange, CsgRangesWeldToTheSequentialSurface)
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<std::size_t, 3>> triangles;
     // Slab ranges are plain Marching Cubes (sharp features are global).
-    BI::marching_cubes_csg(meshes, e, lattice, points, triangles, BI::parameters::sharp_features(false));
+    BI::marching_cubes_csg(lattice, meshes, e, points, triangles, BI::parameters::sharp_features(false));
     ASSERT_GT(triangles.size(), 100u);
     const std::size_t layers = lattice.number_of_points(2) - 1;
     for(std::size_t parts : {1, 2, 3, 4, 7})

@@ -9,9 +9,10 @@
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Mesh_triangles_3.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Mesh_triangles_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/assertions.h>
@@ -125,9 +126,10 @@ public:
    * \param np an optional sequence of named parameters among the ones listed below
    *
    * \cgalNamedParamsBegin
-   *   \cgalParamNBegin{progress}
-   *     \cgalParamDescription{called with fractions in [0, 1], from the calling thread}
-   *     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+   *   \cgalParamNBegin{callback}
+   *     \cgalParamDescription{called with fractions in [0, 1], from the calling thread; returning
+   *       `false` cancels (`Operation_cancelled_error`)}
+   *     \cgalParamType{a callable `bool(double)`} \cgalParamDefault{none}
    *   \cgalParamNEnd
    *   \cgalParamNBegin{max_memory_bytes}
    *     \cgalParamDescription{refuse to start when the estimated memory exceeds it (`Lattice_too_large_error`)}
@@ -151,15 +153,12 @@ public:
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    std::function<void(double)> callback;
-    if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::progress_t>::value)
-      callback = get_parameter(np, internal_np::progress);
     const std::size_t max_memory =
         choose_parameter(get_parameter(np, internal_np::max_memory_bytes), default_max_memory_bytes);
     std::size_t number_of_meshes = 0;
     std::vector<internal::Lattice_triangle> triangles = read_meshes(meshes, number_of_meshes);
     return classify_triangles<ConcurrencyTag>(std::move(triangles), number_of_meshes, lattice, max_memory, 0,
-                                              internal::Progress(callback));
+                                              internal::progress_of(np));
   }
 
   /// \cond SKIP_IN_MANUAL
@@ -169,6 +168,17 @@ public:
   template <typename TriangleMeshRange>
   static std::vector<internal::Lattice_triangle> read_meshes(const TriangleMeshRange& meshes,
                                                              std::size_t& number_of_meshes)
+  {
+    return read_meshes(meshes, number_of_meshes, [](const auto& mesh, std::uint32_t m, auto& out) {
+      internal::append_lattice_triangles(mesh, m, out);
+    });
+  }
+
+  // As above; `append(mesh, m, triangles)` appends the triangles of mesh m
+  // (so that the caller chooses each mesh's vertex point map).
+  template <typename TriangleMeshRange, typename Append>
+  static std::vector<internal::Lattice_triangle> read_meshes(const TriangleMeshRange& meshes,
+                                                             std::size_t& number_of_meshes, const Append& append)
   {
     number_of_meshes = std::size_t(std::distance(std::begin(meshes), std::end(meshes)));
     if(number_of_meshes == 0)
@@ -183,7 +193,7 @@ public:
     triangles.reserve(total_faces);
     std::uint32_t m = 0;
     for(const auto& element : meshes)
-      internal::append_lattice_triangles(internal::unwrap_mesh(element), m++, triangles);
+      append(internal::unwrap_mesh(element), m++, triangles);
     if(triangles.size() >= (std::size_t(1) << 32))
       throw Invalid_input_error("the meshes have 2^32 triangles or more");
     return triangles;

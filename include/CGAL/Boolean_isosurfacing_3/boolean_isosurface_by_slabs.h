@@ -17,7 +17,22 @@
 // `extract_boolean_isosurface()` with the same `slab_layers`, for both
 // concurrency tags.
 
-#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
+#include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_statistics.h>
+#include <CGAL/Boolean_isosurfacing_3/Tetrahedral_grid_3.h>
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Grid_slab.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Slab_pipeline.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Tbiso_chunk.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Tbiso_tetrahedron.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #  include <tbb/parallel_pipeline.h>
@@ -84,11 +99,14 @@ private:
 /// Statistics of `extract_boolean_isosurface_by_slabs()`.
 struct Boolean_isosurface_slab_statistics : Boolean_isosurface_statistics
 {
+  /// Slabs of `slab_layers` cube layers.
   std::size_t number_of_slabs = 0;
   /// Time spent reading field values (the reading stage, all slabs).
+  double seconds_reading = 0;
+  /// \deprecated the same as `seconds_reading`.
   double reading_seconds = 0;
   /// Largest number of field values held at once (the buffers of all slab slots).
-  /// `extraction_seconds` is the wall time of the whole pipeline here.
+  /// `seconds_extraction` is the wall time of the whole pipeline here.
   std::size_t peak_field_values = 0;
 };
 
@@ -121,9 +139,10 @@ struct Boolean_isosurface_slab_statistics : Boolean_isosurface_statistics
 ///     \cgalParamDescription{close the set where it reaches the boundary of the grid, as if the expression were false outside}
 ///     \cgalParamType{`bool`} \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{progress}
-///     \cgalParamDescription{called with the fraction of slabs done, from the calling thread}
-///     \cgalParamType{a callable `f(double)`} \cgalParamDefault{none}
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{`CGAL::parameters::callback`: called with the fraction of slabs done, from
+///       the calling thread; returning `false` cancels with `Operation_cancelled_error`}
+///     \cgalParamType{a callable `bool(double)`} \cgalParamDefault{none}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -147,8 +166,8 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
     throw Invalid_input_error("the expression names field f" + std::to_string(expression.number_of_variables() - 1) +
                               " but there are only " + std::to_string(N) + " fields");
   const bool close = choose_parameter(get_parameter(np, internal_np::close_at_domain_boundary), false);
-  const std::function<void(double)> progress =
-      choose_parameter(get_parameter(np, internal_np::progress), std::function<void(double)>());
+  const internal::Progress progress = internal::progress_of(np);
+  const auto total_start = std::chrono::steady_clock::now();
   const std::size_t slab =
       std::max<std::size_t>(1, choose_parameter(get_parameter(np, internal_np::slab_layers), std::size_t(8)));
 
@@ -156,7 +175,7 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   stats.number_of_tetrahedra = grid.number_of_tetrahedra();
   auto start = std::chrono::steady_clock::now();
   const Evaluator prototype(expression, close);
-  stats.table_seconds = internal::seconds_since(start);
+  stats.seconds_tables = internal::seconds_since(start);
 
   const std::array<std::size_t, 3>& n = grid.vertex_counts();
   const std::size_t layers = n[2] - 1, layer_size = n[0] * n[1];
@@ -168,12 +187,7 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
                           : 1;
 
   // One slot per slab in flight: slab s uses slot s % slabs_in_flight.
-  struct Slot
-  {
-    std::size_t slab = 0;
-    std::vector<double> values;
-    internal::Tbiso_chunk chunk;
-  };
+  typedef internal::Tbiso_slab_slot Slot;
   std::vector<Slot> slots(slabs_in_flight);
   for(Slot& slot : slots)
     slot.values.reserve((std::min(slab, layers) + 3) * layer_size * N);
@@ -181,36 +195,32 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   // The three stages: read (in slab order: one file, read sequentially),
   // evaluate (any order, in parallel), weld and emit (in slab order).
   auto read = [&](Slot& slot) {
-    const std::size_t s = slot.slab;
-    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
-    const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
-    const std::size_t last_layer = std::min(n[2] - 1, k_end + 1);
+    const internal::Slab_window w(slot.slab, slab, layers);
     const auto read_start = std::chrono::steady_clock::now();
-    source.read(first_layer * layer_size, (last_layer - first_layer + 1) * layer_size, slot.values);
-    stats.reading_seconds += internal::seconds_since(read_start);
+    source.read(w.first_layer * layer_size, (w.last_layer - w.first_layer + 1) * layer_size, slot.values);
+    stats.seconds_reading += internal::seconds_since(read_start);
     std::size_t held = 0;
     for(const Slot& other : slots)
       held += other.values.capacity();
     stats.peak_field_values = std::max(stats.peak_field_values, held);
   };
   auto evaluate = [&](Slot& slot) {
-    const std::size_t s = slot.slab;
-    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
-    const std::size_t first_layer = k_begin > 0 ? k_begin - 1 : 0;
+    const internal::Slab_window w(slot.slab, slab, layers);
     for(std::size_t k = 0; k < slot.values.size(); ++k)
       if(!std::isfinite(slot.values[k]))
         throw Non_finite_value_error("field " + std::to_string(k % N) + " has a non-finite value at vertex " +
-                                     std::to_string(first_layer * layer_size + k / N));
+                                     std::to_string(w.first_layer * layer_size + k / N));
     slot.chunk = internal::Tbiso_chunk();
-    internal::extract_grid_slab(grid, slot.values.data(), first_layer * layer_size, N, prototype, k_begin, k_end,
-                                slot.chunk);
+    internal::extract_grid_slab(grid, slot.values.data(), w.first_layer * layer_size, N, prototype, w.k_begin,
+                                w.k_end, slot.chunk);
   };
   std::unordered_map<internal::Tbiso_vertex_key, std::size_t, internal::Tbiso_vertex_key_hash> below, above;
   std::size_t next_index = 0;
   auto weld = [&](Slot& slot) {
     const auto weld_start = std::chrono::steady_clock::now();
     const std::size_t s = slot.slab;
-    const std::size_t k_begin = s * slab, k_end = std::min(layers, k_begin + slab);
+    const internal::Slab_window w(s, slab, layers);
+    const std::size_t k_begin = w.k_begin, k_end = w.k_end;
     internal::Tbiso_chunk& chunk = slot.chunk;
     stats.number_of_evaluated_tetrahedra += chunk.evaluated;
     chunk.index.clear();
@@ -230,56 +240,21 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
         next_index, [&](const std::array<double, 3>& p) { sink.add_point(p); },
         [&](const std::size_t* v, std::size_t count, int label, int) {
           sink.add_polygon(v, count, label);
-          ++stats.number_of_polygons;
+          ++stats.number_of_faces;
         });
     below.swap(above);
     chunk = internal::Tbiso_chunk();
-    stats.welding_seconds += internal::seconds_since(weld_start);
-    if(progress)
-      progress(double(s + 1) / double(number_of_slabs));
+    stats.seconds_welding += internal::seconds_since(weld_start);
+    progress.report(double(s + 1) / double(number_of_slabs));
   };
 
   start = std::chrono::steady_clock::now();
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr(internal::is_parallel_tag<ConcurrencyTag>())
-  {
-    std::size_t next_slab = 0;
-    tbb::parallel_pipeline(
-        slabs_in_flight,
-        tbb::make_filter<void, Slot*>(tbb::filter_mode::serial_in_order,
-                                      [&](tbb::flow_control& control) -> Slot* {
-                                        if(next_slab == number_of_slabs)
-                                        {
-                                          control.stop();
-                                          return nullptr;
-                                        }
-                                        // Tokens finish in order, so slab s - slabs_in_flight is done.
-                                        Slot& slot = slots[next_slab % slabs_in_flight];
-                                        slot.slab = next_slab++;
-                                        read(slot);
-                                        return &slot;
-                                      }) &
-            tbb::make_filter<Slot*, Slot*>(tbb::filter_mode::parallel,
-                                           [&](Slot* slot) {
-                                             evaluate(*slot);
-                                             return slot;
-                                           }) &
-            tbb::make_filter<Slot*, void>(tbb::filter_mode::serial_in_order, [&](Slot* slot) { weld(*slot); }));
-  }
-  else
-#endif
-  {
-    for(std::size_t s = 0; s < number_of_slabs; ++s)
-    {
-      Slot& slot = slots[0];
-      slot.slab = s;
-      read(slot);
-      evaluate(slot);
-      weld(slot);
-    }
-  }
-  stats.extraction_seconds = internal::seconds_since(start);
+  internal::run_slab_pipeline<ConcurrencyTag>(number_of_slabs, slots, read, evaluate, weld);
+  stats.seconds_extraction = internal::seconds_since(start);
   stats.number_of_vertices = next_index;
+  stats.seconds = internal::seconds_since(total_start);
+  stats.reading_seconds = stats.seconds_reading;
+  stats.set_deprecated_names();
   return stats;
 }
 

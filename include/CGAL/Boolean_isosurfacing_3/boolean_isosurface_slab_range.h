@@ -33,8 +33,9 @@
 // global index offset_above - n + l, where offset_above is the prefix sum the
 // range above gets anyway: the duplicates the range below dropped cancel.
 
-#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_chunk.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_by_slabs.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Grid_slab.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Tbiso_chunk.h>
 
 #include <algorithm>
 #include <array>

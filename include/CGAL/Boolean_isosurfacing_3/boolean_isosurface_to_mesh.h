@@ -4,7 +4,10 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_TO_MESH_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_BOOLEAN_ISOSURFACE_TO_MESH_H
 
+#include <CGAL/Boolean_isosurfacing_3/internal/clear_output_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/Boolean_isosurface_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/extract_crease_network.h>
 
@@ -114,7 +117,7 @@ void boolean_isosurface_to_mesh(const Boolean_isosurface_soup<Point_3>& soup, Po
       if(v >= soup.points.size())
         throw Invalid_input_error("polygon " + std::to_string(p) + " refers to point " + std::to_string(v) +
                                   " but the soup has " + std::to_string(soup.points.size()) + " points");
-  CGAL::clear(mesh);
+  internal::clear_output_mesh(mesh);
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons))
     throw Invalid_input_error("cannot make a polygon mesh of the Boolean isosurface: " +
                               internal::describe_non_manifold_soup(soup) +
@@ -201,6 +204,84 @@ Boolean_isosurface_mesh_maps<Point_3> boolean_isosurface_to_mesh(const Boolean_i
                                                                   CGAL::Surface_mesh<Point_3>& mesh)
 {
   return boolean_isosurface_to_mesh(soup, extract_crease_network(soup), mesh);
+}
+
+/*!
+ * \ingroup PkgBooleanIsosurfacing3Ref
+ *
+ * TBISO into a `Surface_mesh`: `extract_boolean_isosurface()` on `domain`
+ * (a `Tetrahedral_grid_3` or a `Tetrahedral_mesh_3`), then
+ * `boolean_isosurface_to_mesh()`.  `mesh` is cleared first (the package's
+ * rule for every output).  The side outputs go to CGAL's named parameters:
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{face_patch_map}
+ *     \cgalParamDescription{receives the field label of every face (`Boolean_isosurface_soup::face_fields`;
+ *       -1 for a closing face on the domain boundary)}
+ *     \cgalParamType{a `WritablePropertyMap` from `face_descriptor` to `int`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{receives `true` for the edges of the crease network
+ *       (`extract_crease_network()`), `false` for the others}
+ *     \cgalParamType{a `WritablePropertyMap` from `edge_descriptor` to `bool`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_is_constrained_map}
+ *     \cgalParamDescription{receives `true` for the corners of the crease network, `false` for the others}
+ *     \cgalParamType{a `WritablePropertyMap` from `vertex_descriptor` to `bool`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{callback}
+ *     \cgalParamDescription{as for `extract_boolean_isosurface()`; its other named parameters apply too}
+ *     \cgalParamType{a callable `bool(double)`} \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \throws Invalid_input_error as `extract_boolean_isosurface()`, and when the
+ * surface is not a 2-manifold (see `boolean_isosurface_to_mesh()`).
+ */
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TetrahedralDomain_3, typename Point_3,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Boolean_isosurface_statistics extract_boolean_isosurface(const TetrahedralDomain_3& domain, const Scalar_fields& fields,
+                                                         const Boolean_expression& expression,
+                                                         CGAL::Surface_mesh<Point_3>& mesh,
+                                                         const NamedParameters& np = parameters::default_values())
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  Boolean_isosurface_soup<Point_3> soup;
+  Boolean_isosurface_statistics statistics = extract_boolean_isosurface<ConcurrencyTag>(domain, fields, expression, soup, np);
+  const auto start = std::chrono::steady_clock::now();
+  const Crease_network creases = extract_crease_network(soup);
+  boolean_isosurface_to_mesh<Point_3, Mesh>(soup, mesh);
+  // The mesh was built from scratch: face p is polygon p, vertex i is point i.
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::face_patch_t>::value)
+  {
+    auto fpm = parameters::get_parameter(np, CGAL::internal_np::face_patch);
+    for(std::size_t p = 0; p < soup.polygons.size(); ++p)
+      put(fpm, typename Mesh::Face_index(typename Mesh::size_type(p)), soup.face_fields[p]);
+  }
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
+  {
+    auto ecm = parameters::get_parameter(np, CGAL::internal_np::edge_is_constrained);
+    for(const auto e : mesh.edges())
+      put(ecm, e, false);
+    for(const std::vector<std::size_t>& line : creases.polylines)
+      for(std::size_t k = 0; k + 1 < line.size(); ++k)
+      {
+        const auto h = mesh.halfedge(typename Mesh::Vertex_index(typename Mesh::size_type(line[k])),
+                                     typename Mesh::Vertex_index(typename Mesh::size_type(line[k + 1])));
+        if(h != Mesh::null_halfedge() && !mesh.is_border(mesh.edge(h)))
+          put(ecm, mesh.edge(h), true);
+      }
+  }
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_is_constrained_t>::value)
+  {
+    auto vcm = parameters::get_parameter(np, CGAL::internal_np::vertex_is_constrained);
+    for(const auto v : mesh.vertices())
+      put(vcm, v, false);
+    for(std::size_t c : creases.corners)
+      put(vcm, typename Mesh::Vertex_index(typename Mesh::size_type(c)), true);
+  }
+  statistics.seconds += internal::seconds_since(start);
+  return statistics;
 }
 
 } // namespace Boolean_isosurfacing

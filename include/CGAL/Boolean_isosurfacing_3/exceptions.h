@@ -98,6 +98,18 @@ private:
   std::size_t m_position;
 };
 
+/// Thrown by every algorithm of the package when the `callback` named
+/// parameter (`CGAL::parameters::callback`) returns `false`: the run is
+/// abandoned and the outputs are left in an unspecified but valid state
+/// (they may be empty or partly filled).  It is not an input error.
+class Operation_cancelled_error : public std::runtime_error
+{
+public:
+  /// `message` names the algorithm that was cancelled.
+  explicit Operation_cancelled_error(const std::string& message)
+    : std::runtime_error(message) {}
+};
+
 } // namespace Boolean_isosurfacing
 } // namespace CGAL
 

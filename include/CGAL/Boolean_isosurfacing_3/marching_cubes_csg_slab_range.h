@@ -230,8 +230,10 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
     range.top_points.assign(range.points.begin() + std::ptrdiff_t(owned), range.points.end());
     range.points.resize(owned);
   }
-  range.statistics.output_vertices = range.points.size();
-  range.statistics.output_triangles = range.triangles.size();
+  range.statistics.number_of_vertices = range.points.size();
+  range.statistics.number_of_faces = range.triangles.size();
+  range.statistics.output_vertices = range.statistics.number_of_vertices; // the deprecated names
+  range.statistics.output_triangles = range.statistics.number_of_faces;
 }
 
 } // namespace Boolean_isosurfacing

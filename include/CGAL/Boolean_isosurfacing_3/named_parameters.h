@@ -40,7 +40,8 @@
   X(feature_angle_t, feature_angle)                   \
   X(sharp_feature_output_t, sharp_feature_output)   \
   X(sliver_edge_length_t, sliver_edge_length)         \
-  X(resolution_check_t, resolution_check)
+  X(resolution_check_t, resolution_check)             \
+  X(vertex_point_maps_t, vertex_point_maps)
 
 namespace CGAL {
 namespace Boolean_isosurfacing {

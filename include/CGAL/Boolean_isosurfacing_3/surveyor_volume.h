@@ -7,9 +7,10 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/Triangle_soup_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Huge_pages.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Tetrahedra_sum.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Surveyor_volume/Tetrahedra_sum.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -210,6 +211,9 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
  * closed, outward-oriented surface without self-intersections, the enclosed
  * volume.
  *
+ * \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`, for the common signature
+ *         of the package's algorithms: the sum is one sequential pass whatever the tag (its
+ *         certified error bound is that of one ordered compensated sum)
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeGraph`
  * \tparam NamedParameters a sequence of named parameters
  *
@@ -247,11 +251,12 @@ void check_soup_is_closed(const std::vector<TriangleIndices>& triangles, std::si
  * \throws Non_finite_value_error if a vertex has a NaN or infinite coordinate.
  * \throws Inward_oriented_mesh_error, Self_intersecting_mesh_error as above.
  */
-template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS,
           typename = std::enable_if_t<!std::is_same<TriangleMesh, Triangle_soup_3>::value>>
 typename CGAL::GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type::FT
 surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters::default_values())
 {
+  internal::check_concurrency_tag<ConcurrencyTag>();
   typedef typename CGAL::GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
   typedef typename Geom_traits::FT FT;
   typedef typename Geom_traits::Point_3 Point_3;
@@ -353,7 +358,8 @@ surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters:
  * triangle), Open_mesh_error, Non_finite_value_error,
  * Inward_oriented_mesh_error.
  */
-template <typename PointRange, typename TriangleRange, typename CGAL_NP_TEMPLATE_PARAMETERS,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename PointRange, typename TriangleRange,
+          typename CGAL_NP_TEMPLATE_PARAMETERS,
           typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value>>
 auto surveyor_volume(const PointRange& points,
                      const TriangleRange& triangles,
@@ -361,6 +367,7 @@ auto surveyor_volume(const PointRange& points,
     -> typename CGAL::Kernel_traits<typename boost::property_traits<
         typename CGAL::GetPointMap<PointRange, CGAL_NP_CLASS>::const_type>::value_type>::Kernel::FT
 {
+  internal::check_concurrency_tag<ConcurrencyTag>();
   typedef typename CGAL::GetPointMap<PointRange, CGAL_NP_CLASS>::const_type Point_map;
   typedef typename boost::property_traits<Point_map>::value_type Point_3;
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel Default_traits;
@@ -527,9 +534,10 @@ std::array<double, 3> finite_centroid(const PointArray& points)
  * repeated in a triangle), Open_mesh_error, Non_finite_value_error,
  * Inward_oriented_mesh_error.
  */
-template <typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename CGAL_NP_TEMPLATE_PARAMETERS>
 double surveyor_volume(const Triangle_soup_3& soup, const CGAL_NP_CLASS& np = parameters::default_values())
 {
+  internal::check_concurrency_tag<ConcurrencyTag>();
   using parameters::choose_parameter;
   using parameters::get_parameter;
   const bool signed_result = choose_parameter(get_parameter(np, internal_np::signed_volume), false);

@@ -333,6 +333,289 @@ private:
   std::size_t m_next = 0;
 };
 
+// The PLY header of `in`: its format and elements; `line_number` is the
+// number of lines read.
+inline std::vector<Ply_element> read_fields_PLY_header(std::istream& in, const std::string& name,
+                                                       std::size_t& line_number, Ply_format& format)
+{
+  std::string line;
+  line_number = 0;
+  auto header_error = [&](const std::string& what) {
+    return Parse_error("'" + name + "' line " + std::to_string(line_number) + ": " + what, line_number);
+  };
+  auto next_header_line = [&](std::vector<std::string>& words) {
+    if(!std::getline(in, line))
+      throw header_error("the file ends inside the PLY header");
+    ++line_number;
+    if(!line.empty() && line.back() == '\r')
+      line.pop_back();
+    words.clear();
+    std::istringstream split(line);
+    std::string w;
+    while(split >> w)
+      words.push_back(w);
+  };
+  auto excerpt = [](const std::string& text) { return CGAL::Boolean_isosurfacing::internal::input_excerpt(text); };
+  std::vector<std::string> words;
+  next_header_line(words);
+  if(words.size() != 1 || words[0] != "ply")
+    throw header_error("not a PLY file (the first line is not 'ply')");
+  format = Ply_format::ASCII;
+  bool have_format = false;
+  std::vector<Ply_element> elements;
+  for(;;)
+  {
+    next_header_line(words);
+    if(words.empty() || words[0] == "comment" || words[0] == "obj_info")
+      continue;
+    if(words[0] == "end_header")
+      break;
+    if(words[0] == "format")
+    {
+      if(have_format)
+        throw header_error("a second 'format' line");
+      if(words.size() != 3)
+        throw header_error("expected 'format <ascii|binary_little_endian|binary_big_endian> 1.0'");
+      if(words[2] != "1.0")
+        throw header_error("unsupported PLY version '" + excerpt(words[2]) + "' (only 1.0 is read)");
+      if(words[1] == "ascii")
+        format = Ply_format::ASCII;
+      else if(words[1] == "binary_little_endian")
+        format = Ply_format::BINARY_LITTLE_ENDIAN;
+      else if(words[1] == "binary_big_endian")
+        format = Ply_format::BINARY_BIG_ENDIAN;
+      else
+        throw header_error("unknown PLY format '" + excerpt(words[1]) + "'");
+      have_format = true;
+    }
+    else if(words[0] == "element")
+    {
+      Ply_element e;
+      unsigned long long count = 0;
+      const char* last = words.size() == 3 ? words[2].data() + words[2].size() : nullptr;
+      if(words.size() != 3)
+        throw header_error("expected 'element <name> <count>'");
+      const std::from_chars_result r = std::from_chars(words[2].data(), last, count);
+      if(r.ec == std::errc::result_out_of_range || count > (std::numeric_limits<std::size_t>::max)())
+        throw header_error("the count of element '" + excerpt(words[1]) + "' is out of range: " + excerpt(words[2]));
+      if(r.ec != std::errc() || r.ptr != last)
+        throw header_error("expected 'element <name> <count>', the count '" + excerpt(words[2]) +
+                           "' is not a non-negative integer");
+      for(const Ply_element& other : elements)
+        if(other.name == words[1])
+          throw header_error("a second element '" + excerpt(words[1]) + "'");
+      e.name = words[1];
+      e.count = std::size_t(count);
+      elements.push_back(e);
+    }
+    else if(words[0] == "property")
+    {
+      if(elements.empty())
+        throw header_error("a property before any element");
+      Ply_property p;
+      bool ok;
+      if(words.size() == 5 && words[1] == "list")
+      {
+        p.is_list = true;
+        ok = ply_type_from_name(words[2], p.count_type) && ply_type_from_name(words[3], p.type);
+        p.name = words[4];
+      }
+      else
+      {
+        ok = words.size() == 3 && ply_type_from_name(words[1], p.type);
+        p.name = words.size() == 3 ? words[2] : std::string();
+      }
+      if(!ok)
+        throw header_error("expected 'property <type> <name>' or 'property list <type> <type> <name>': '" +
+                           excerpt(line) + "'");
+      elements.back().properties.push_back(p);
+    }
+    else
+      throw header_error("unknown PLY header line '" + excerpt(line) + "'");
+  }
+  if(!have_format)
+    throw header_error("no 'format' line in the PLY header");
+
+  return elements;
+}
+
+// The positions of the properties read: x, y, z of the vertices, the
+// indices and the field of the faces.
+struct Fields_PLY_roles
+{
+  const Ply_element* vertex = nullptr;
+  const Ply_element* face = nullptr;
+  std::size_t px = 0, py = 0, pz = 0, pindices = 0, pfield = 0;
+};
+
+inline Fields_PLY_roles find_fields_PLY_roles(const std::vector<Ply_element>& elements, const std::string& name)
+{
+  Fields_PLY_roles roles;
+  const Ply_element*& vertex = roles.vertex;
+  const Ply_element*& face = roles.face;
+  for(const Ply_element& e : elements)
+  {
+    if(e.name == "vertex")
+      vertex = &e;
+    if(e.name == "face")
+      face = &e;
+  }
+  if(vertex == nullptr || face == nullptr)
+    throw Invalid_input_error("'" + name + "': the PLY file has no 'vertex' or no 'face' element");
+  auto find = [&](const Ply_element& e, std::initializer_list<const char*> names, bool list) {
+    for(std::size_t k = 0; k < e.properties.size(); ++k)
+      for(const char* n : names)
+        if(e.properties[k].name == n && e.properties[k].is_list == list)
+          return k;
+    std::string wanted = *names.begin();
+    throw Invalid_input_error("'" + name + "': the PLY '" + e.name + "' element has no " +
+                              (list ? "list" : "scalar") + " property '" + wanted + "'");
+  };
+  roles.px = find(*vertex, {"x"}, false);
+  roles.py = find(*vertex, {"y"}, false);
+  roles.pz = find(*vertex, {"z"}, false);
+  roles.pindices = find(*face, {"vertex_indices", "vertex_index"}, true);
+  roles.pfield = find(*face, {"field"}, false);
+
+  return roles;
+}
+
+// Every record takes some bytes: at least the sizes of its scalars and list
+// counts in binary, two characters (a digit and a blank) per property in
+// ASCII.  So the counts of the header, which nothing bounds, are checked
+// against the bytes that follow it before anything is reserved or looped
+// over: a record of no byte at all (no property) is an error, since its
+// count could be anything.  Returns the bytes that follow the header.
+inline std::size_t check_fields_PLY_counts(std::istream& in, const std::vector<Ply_element>& elements,
+                                           Ply_format format, const std::string& name)
+{
+  auto excerpt = [](const std::string& text) { return CGAL::Boolean_isosurfacing::internal::input_excerpt(text); };
+  const std::size_t remaining = CGAL::Boolean_isosurfacing::internal::remaining_bytes(in);
+  std::size_t needed = 0;
+  for(const Ply_element& e : elements)
+  {
+    std::size_t record = 0;
+    for(const Ply_property& p : e.properties)
+      record += format == Ply_format::ASCII ? 2 : ply_type_size(p.is_list ? p.count_type : p.type);
+    if(e.count == 0)
+      continue;
+    if(record == 0)
+      throw Invalid_input_error("'" + name + "': the PLY element '" + excerpt(e.name) + "' has " +
+                                std::to_string(e.count) + " records but no property");
+    if(remaining != CGAL::Boolean_isosurfacing::internal::unknown_remaining_bytes &&
+       (e.count > remaining / record || needed + e.count * record > remaining + 1)) // ASCII: last newline optional
+      throw Invalid_input_error("'" + name + "': the PLY header announces " + std::to_string(e.count) + " '" +
+                                excerpt(e.name) + "' records of at least " + std::to_string(record) +
+                                " bytes, but only " + std::to_string(remaining) + " bytes follow the header");
+    needed += e.count * record;
+  }
+
+  return remaining;
+}
+
+// The records of the body, into `soup`.
+template <typename Point_3>
+void read_fields_PLY_body(std::istream& in, const std::vector<Ply_element>& elements, const Fields_PLY_roles& roles,
+                          Ply_format format, const std::string& name, std::size_t remaining, Ply_value_reader& reader,
+                          Boolean_isosurface_soup<Point_3>& soup)
+{
+  const Ply_element* vertex = roles.vertex;
+  const Ply_element* face = roles.face;
+  const std::size_t px = roles.px, py = roles.py, pz = roles.pz, pindices = roles.pindices, pfield = roles.pfield;
+  CGAL_USE(in);
+  CGAL_USE(format);
+  const long long max_index = (std::numeric_limits<std::int32_t>::max)();
+  for(const Ply_element& e : elements)
+  {
+    const bool is_vertex = &e == vertex, is_face = &e == face;
+    if(is_vertex)
+      soup.points.reserve(CGAL::Boolean_isosurfacing::internal::reservable(e.count, 1, remaining));
+    for(std::size_t r = 0; r < e.count; ++r)
+    {
+      reader.begin_record(e.name.c_str(), r);
+      std::array<double, 3> xyz{0, 0, 0};
+      std::vector<std::size_t> polygon;
+      int field = 0;
+      for(std::size_t k = 0; k < e.properties.size(); ++k)
+      {
+        const Ply_property& p = e.properties[k];
+        if(p.is_list)
+        {
+          const long long n = reader.integer(p.count_type, 0, 1 << 20, "the list length");
+          for(long long i = 0; i < n; ++i)
+          {
+            if(is_face && k == pindices)
+              polygon.push_back(std::size_t(reader.integer(p.type, 0, max_index, "the vertex index")));
+            else
+              reader.value(p.type);
+          }
+          continue;
+        }
+        if(is_vertex && (k == px || k == py || k == pz))
+        {
+          const double c = reader.value(p.type);
+          if(!std::isfinite(c))
+            throw Non_finite_value_error("'" + name + "': vertex " + std::to_string(r) + " has a non-finite coordinate");
+          xyz[k == px ? 0 : k == py ? 1 : 2] = c;
+        }
+        else if(is_face && k == pfield)
+          field = int(reader.integer(p.type, Boolean_isosurface_soup<Point_3>::domain_boundary,
+                                     (std::numeric_limits<std::int32_t>::max)(), "the field"));
+        else
+          reader.value(p.type);
+      }
+      reader.end_record();
+      if(is_vertex)
+        soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+      else if(is_face)
+      {
+        soup.polygons.push_back(std::move(polygon));
+        soup.face_fields.push_back(field);
+      }
+    }
+  }
+}
+
+// Nothing may follow the last element (blank lines in ASCII).
+inline void check_fields_PLY_end(std::istream& in, Ply_format format, const std::string& name,
+                                 const Ply_value_reader& reader)
+{
+  auto excerpt = [](const std::string& text) { return CGAL::Boolean_isosurfacing::internal::input_excerpt(text); };
+  std::string line;
+  if(format == Ply_format::ASCII)
+  {
+    std::size_t at = reader.line_number();
+    while(std::getline(in, line))
+    {
+      ++at;
+      if(line.find_first_not_of(" \t\r\f\v") != std::string::npos)
+        throw Parse_error("'" + name + "' line " + std::to_string(at) + ": text after the last element: '" +
+                            excerpt(line) + "'",
+                          at);
+    }
+  }
+  else if(in.peek() != std::char_traits<char>::eof())
+  {
+    std::size_t extra = 0;
+    while(in.get() != std::char_traits<char>::eof() && extra < 1000000)
+      ++extra;
+    throw Invalid_input_error("'" + name + "': " + (extra >= 1000000 ? std::string("more than 1000000") : std::to_string(extra)) +
+                              " trailing bytes after the last element of the binary PLY body");
+  }
+}
+
+// Every face index names a vertex of the soup.
+template <typename Point_3>
+void check_fields_PLY_indices(const Boolean_isosurface_soup<Point_3>& soup, const std::string& name)
+{
+  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
+    for(std::size_t v : soup.polygons[f])
+      if(v >= soup.points.size())
+        throw Invalid_input_error("'" + name + "': face " + std::to_string(f) + " refers to vertex " +
+                                  std::to_string(v) + " but there are " + std::to_string(soup.points.size()) +
+                                  " vertices");
+}
+
 } // namespace soup_files_io
 } // namespace internal
 
@@ -439,237 +722,15 @@ void read_PLY_with_fields(std::istream& in, Boolean_isosurface_soup<Point_3>& so
 {
   using namespace internal::soup_files_io;
   soup.clear();
-
-  // Header.
-  std::string line;
   std::size_t line_number = 0;
-  auto header_error = [&](const std::string& what) {
-    return Parse_error("'" + name + "' line " + std::to_string(line_number) + ": " + what, line_number);
-  };
-  auto next_header_line = [&](std::vector<std::string>& words) {
-    if(!std::getline(in, line))
-      throw header_error("the file ends inside the PLY header");
-    ++line_number;
-    if(!line.empty() && line.back() == '\r')
-      line.pop_back();
-    words.clear();
-    std::istringstream split(line);
-    std::string w;
-    while(split >> w)
-      words.push_back(w);
-  };
-  auto excerpt = [](const std::string& text) { return CGAL::Boolean_isosurfacing::internal::input_excerpt(text); };
-  std::vector<std::string> words;
-  next_header_line(words);
-  if(words.size() != 1 || words[0] != "ply")
-    throw header_error("not a PLY file (the first line is not 'ply')");
   Ply_format format = Ply_format::ASCII;
-  bool have_format = false;
-  std::vector<Ply_element> elements;
-  for(;;)
-  {
-    next_header_line(words);
-    if(words.empty() || words[0] == "comment" || words[0] == "obj_info")
-      continue;
-    if(words[0] == "end_header")
-      break;
-    if(words[0] == "format")
-    {
-      if(have_format)
-        throw header_error("a second 'format' line");
-      if(words.size() != 3)
-        throw header_error("expected 'format <ascii|binary_little_endian|binary_big_endian> 1.0'");
-      if(words[2] != "1.0")
-        throw header_error("unsupported PLY version '" + excerpt(words[2]) + "' (only 1.0 is read)");
-      if(words[1] == "ascii")
-        format = Ply_format::ASCII;
-      else if(words[1] == "binary_little_endian")
-        format = Ply_format::BINARY_LITTLE_ENDIAN;
-      else if(words[1] == "binary_big_endian")
-        format = Ply_format::BINARY_BIG_ENDIAN;
-      else
-        throw header_error("unknown PLY format '" + excerpt(words[1]) + "'");
-      have_format = true;
-    }
-    else if(words[0] == "element")
-    {
-      Ply_element e;
-      unsigned long long count = 0;
-      const char* last = words.size() == 3 ? words[2].data() + words[2].size() : nullptr;
-      if(words.size() != 3)
-        throw header_error("expected 'element <name> <count>'");
-      const std::from_chars_result r = std::from_chars(words[2].data(), last, count);
-      if(r.ec == std::errc::result_out_of_range || count > (std::numeric_limits<std::size_t>::max)())
-        throw header_error("the count of element '" + excerpt(words[1]) + "' is out of range: " + excerpt(words[2]));
-      if(r.ec != std::errc() || r.ptr != last)
-        throw header_error("expected 'element <name> <count>', the count '" + excerpt(words[2]) +
-                           "' is not a non-negative integer");
-      for(const Ply_element& other : elements)
-        if(other.name == words[1])
-          throw header_error("a second element '" + excerpt(words[1]) + "'");
-      e.name = words[1];
-      e.count = std::size_t(count);
-      elements.push_back(e);
-    }
-    else if(words[0] == "property")
-    {
-      if(elements.empty())
-        throw header_error("a property before any element");
-      Ply_property p;
-      bool ok;
-      if(words.size() == 5 && words[1] == "list")
-      {
-        p.is_list = true;
-        ok = ply_type_from_name(words[2], p.count_type) && ply_type_from_name(words[3], p.type);
-        p.name = words[4];
-      }
-      else
-      {
-        ok = words.size() == 3 && ply_type_from_name(words[1], p.type);
-        p.name = words.size() == 3 ? words[2] : std::string();
-      }
-      if(!ok)
-        throw header_error("expected 'property <type> <name>' or 'property list <type> <type> <name>': '" +
-                           excerpt(line) + "'");
-      elements.back().properties.push_back(p);
-    }
-    else
-      throw header_error("unknown PLY header line '" + excerpt(line) + "'");
-  }
-  if(!have_format)
-    throw header_error("no 'format' line in the PLY header");
-
-  // What we need, and where it is.
-  const Ply_element* vertex = nullptr;
-  const Ply_element* face = nullptr;
-  for(const Ply_element& e : elements)
-  {
-    if(e.name == "vertex")
-      vertex = &e;
-    if(e.name == "face")
-      face = &e;
-  }
-  if(vertex == nullptr || face == nullptr)
-    throw Invalid_input_error("'" + name + "': the PLY file has no 'vertex' or no 'face' element");
-  auto find = [&](const Ply_element& e, std::initializer_list<const char*> names, bool list) {
-    for(std::size_t k = 0; k < e.properties.size(); ++k)
-      for(const char* n : names)
-        if(e.properties[k].name == n && e.properties[k].is_list == list)
-          return k;
-    std::string wanted = *names.begin();
-    throw Invalid_input_error("'" + name + "': the PLY '" + e.name + "' element has no " +
-                              (list ? "list" : "scalar") + " property '" + wanted + "'");
-  };
-  const std::size_t px = find(*vertex, {"x"}, false), py = find(*vertex, {"y"}, false),
-                    pz = find(*vertex, {"z"}, false);
-  const std::size_t pindices = find(*face, {"vertex_indices", "vertex_index"}, true);
-  const std::size_t pfield = find(*face, {"field"}, false);
-
-  // Every record takes some bytes: at least the sizes of its scalars and list
-  // counts in binary, two characters (a digit and a blank) per property in
-  // ASCII.  So the counts of the header, which nothing bounds, are checked
-  // against the bytes that follow it before anything is reserved or looped
-  // over: a record of no byte at all (no property) is an error, since its
-  // count could be anything.
-  const std::size_t remaining = CGAL::Boolean_isosurfacing::internal::remaining_bytes(in);
-  std::size_t needed = 0;
-  for(const Ply_element& e : elements)
-  {
-    std::size_t record = 0;
-    for(const Ply_property& p : e.properties)
-      record += format == Ply_format::ASCII ? 2 : ply_type_size(p.is_list ? p.count_type : p.type);
-    if(e.count == 0)
-      continue;
-    if(record == 0)
-      throw Invalid_input_error("'" + name + "': the PLY element '" + excerpt(e.name) + "' has " +
-                                std::to_string(e.count) + " records but no property");
-    if(remaining != CGAL::Boolean_isosurfacing::internal::unknown_remaining_bytes &&
-       (e.count > remaining / record || needed + e.count * record > remaining + 1)) // ASCII: last newline optional
-      throw Invalid_input_error("'" + name + "': the PLY header announces " + std::to_string(e.count) + " '" +
-                                excerpt(e.name) + "' records of at least " + std::to_string(record) +
-                                " bytes, but only " + std::to_string(remaining) + " bytes follow the header");
-    needed += e.count * record;
-  }
-
-  // Body.
+  const std::vector<Ply_element> elements = read_fields_PLY_header(in, name, line_number, format);
+  const Fields_PLY_roles roles = find_fields_PLY_roles(elements, name);
+  const std::size_t remaining = check_fields_PLY_counts(in, elements, format, name);
   Ply_value_reader reader(in, format, name, line_number);
-  const long long max_index = (std::numeric_limits<std::int32_t>::max)();
-  for(const Ply_element& e : elements)
-  {
-    const bool is_vertex = &e == vertex, is_face = &e == face;
-    if(is_vertex)
-      soup.points.reserve(CGAL::Boolean_isosurfacing::internal::reservable(e.count, 1, remaining));
-    for(std::size_t r = 0; r < e.count; ++r)
-    {
-      reader.begin_record(e.name.c_str(), r);
-      std::array<double, 3> xyz{0, 0, 0};
-      std::vector<std::size_t> polygon;
-      int field = 0;
-      for(std::size_t k = 0; k < e.properties.size(); ++k)
-      {
-        const Ply_property& p = e.properties[k];
-        if(p.is_list)
-        {
-          const long long n = reader.integer(p.count_type, 0, 1 << 20, "the list length");
-          for(long long i = 0; i < n; ++i)
-          {
-            if(is_face && k == pindices)
-              polygon.push_back(std::size_t(reader.integer(p.type, 0, max_index, "the vertex index")));
-            else
-              reader.value(p.type);
-          }
-          continue;
-        }
-        if(is_vertex && (k == px || k == py || k == pz))
-        {
-          const double c = reader.value(p.type);
-          if(!std::isfinite(c))
-            throw Non_finite_value_error("'" + name + "': vertex " + std::to_string(r) + " has a non-finite coordinate");
-          xyz[k == px ? 0 : k == py ? 1 : 2] = c;
-        }
-        else if(is_face && k == pfield)
-          field = int(reader.integer(p.type, Boolean_isosurface_soup<Point_3>::domain_boundary,
-                                     (std::numeric_limits<std::int32_t>::max)(), "the field"));
-        else
-          reader.value(p.type);
-      }
-      reader.end_record();
-      if(is_vertex)
-        soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-      else if(is_face)
-      {
-        soup.polygons.push_back(std::move(polygon));
-        soup.face_fields.push_back(field);
-      }
-    }
-  }
-  // Nothing may follow the last element (blank lines in ASCII).
-  if(format == Ply_format::ASCII)
-  {
-    std::size_t at = reader.line_number();
-    while(std::getline(in, line))
-    {
-      ++at;
-      if(line.find_first_not_of(" \t\r\f\v") != std::string::npos)
-        throw Parse_error("'" + name + "' line " + std::to_string(at) + ": text after the last element: '" +
-                            excerpt(line) + "'",
-                          at);
-    }
-  }
-  else if(in.peek() != std::char_traits<char>::eof())
-  {
-    std::size_t extra = 0;
-    while(in.get() != std::char_traits<char>::eof() && extra < 1000000)
-      ++extra;
-    throw Invalid_input_error("'" + name + "': " + (extra >= 1000000 ? std::string("more than 1000000") : std::to_string(extra)) +
-                              " trailing bytes after the last element of the binary PLY body");
-  }
-  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
-    for(std::size_t v : soup.polygons[f])
-      if(v >= soup.points.size())
-        throw Invalid_input_error("'" + name + "': face " + std::to_string(f) + " refers to vertex " +
-                                  std::to_string(v) + " but there are " + std::to_string(soup.points.size()) +
-                                  " vertices");
+  read_fields_PLY_body(in, elements, roles, format, name, remaining, reader, soup);
+  check_fields_PLY_end(in, format, name, reader);
+  check_fields_PLY_indices(soup, name);
 }
 
 /// \ingroup PkgBooleanIsosurfacing3Ref

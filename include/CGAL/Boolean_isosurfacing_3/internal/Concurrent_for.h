@@ -9,6 +9,8 @@
 // Callers make every iteration write its own output slot, so the result is
 // independent of the schedule: sequential and parallel runs are identical.
 
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 
@@ -42,18 +44,31 @@ void check_concurrency_tag()
 }
 
 /// Maps the progress of one phase, [0, 1], to a sub-interval of the whole.
+/// The callback returns `false` to cancel: `report()` then throws
+/// `Operation_cancelled_error`, always from the calling thread (between the
+/// batches of `concurrent_for()`), never from a TBB worker.
 class Progress
 {
 public:
   Progress() = default;
-  explicit Progress(std::function<void(double)> callback, double begin = 0, double end = 1)
+  explicit Progress(std::function<bool(double)> callback, double begin = 0, double end = 1)
     : m_callback(std::move(callback)), m_begin(begin), m_end(end)
   {}
+  /// A progress-only callback (the deprecated `progress` named parameter): it never cancels.
+  explicit Progress(std::function<void(double)> callback, double begin = 0, double end = 1)
+    : m_begin(begin), m_end(end)
+  {
+    if(callback)
+      m_callback = [callback](double f) {
+        callback(f);
+        return true;
+      };
+  }
 
   void report(double fraction) const
   {
-    if(m_callback)
-      m_callback(m_begin + (m_end - m_begin) * std::min(1.0, std::max(0.0, fraction)));
+    if(m_callback && !m_callback(m_begin + (m_end - m_begin) * std::min(1.0, std::max(0.0, fraction))))
+      throw Operation_cancelled_error("cancelled by the callback");
   }
 
   /// The progress of the part [a, b] of this phase.
@@ -69,7 +84,7 @@ public:
   bool active() const { return static_cast<bool>(m_callback); }
 
 private:
-  std::function<void(double)> m_callback;
+  std::function<bool(double)> m_callback;
   double m_begin = 0, m_end = 1;
 };
 

@@ -21,7 +21,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Lattice_classifier_3.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Accurate_sum.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 
 #include <algorithm>
 #include <array>

@@ -8,7 +8,7 @@
 // double triangles, validating them on the way.
 
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Perturbed_line_predicates_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -53,15 +53,15 @@ using Mesh_point = typename boost::property_traits<
 /// Appends the triangles of `mesh` (input number `mesh_index`) to `out`.
 /// \throws Empty_input_error, Non_triangle_face_error, Open_mesh_error,
 /// Non_finite_value_error, each naming the mesh and the element.
-template <typename TriangleMesh>
-void append_lattice_triangles(const TriangleMesh& mesh, std::uint32_t mesh_index, std::vector<Lattice_triangle>& out)
+template <typename TriangleMesh, typename VertexPointMap>
+void append_lattice_triangles(const TriangleMesh& mesh, const VertexPointMap& vpm, std::uint32_t mesh_index,
+                              std::vector<Lattice_triangle>& out)
 {
   typedef boost::graph_traits<TriangleMesh> Graph_traits;
   typedef typename Graph_traits::halfedge_descriptor halfedge_descriptor;
   const std::string name = "mesh #" + std::to_string(mesh_index);
   if(faces(mesh).empty())
     throw Empty_input_error(name + " has no face");
-  const auto vpm = get_const_property_map(CGAL::vertex_point, mesh);
   std::size_t vertex_number = 0;
   for(const auto v : vertices(mesh))
   {
@@ -83,6 +83,13 @@ void append_lattice_triangles(const TriangleMesh& mesh, std::uint32_t mesh_index
   for_each_closed_mesh_triangle(mesh, name, [&](halfedge_descriptor h0, halfedge_descriptor h1, halfedge_descriptor h2) {
     out.push_back(make_lattice_triangle(coordinates(h0), coordinates(h1), coordinates(h2), mesh_index));
   });
+}
+
+/// As above, with the mesh's own `vertex_point` map.
+template <typename TriangleMesh>
+void append_lattice_triangles(const TriangleMesh& mesh, std::uint32_t mesh_index, std::vector<Lattice_triangle>& out)
+{
+  append_lattice_triangles(mesh, get_const_property_map(CGAL::vertex_point, mesh), mesh_index, out);
 }
 
 } // namespace internal

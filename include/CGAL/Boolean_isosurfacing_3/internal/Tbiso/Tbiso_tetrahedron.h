@@ -39,7 +39,7 @@
 // Coordinates are computed in double, once, at the end.
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Exact_determinant_sign.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Exact_determinant_sign.h>
 
 #include <algorithm>
 #include <array>

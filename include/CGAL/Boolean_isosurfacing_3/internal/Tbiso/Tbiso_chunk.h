@@ -7,8 +7,8 @@
 // The output of a chunk of tetrahedra, and how chunks are welded into one
 // soup (in-core drivers and the slab stream alike).
 
-#include <CGAL/Boolean_isosurfacing_3/internal/Exact_determinant_sign.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso_tetrahedron.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Exact_determinant_sign.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Tbiso/Tbiso_tetrahedron.h>
 
 #include <algorithm>
 #include <array>

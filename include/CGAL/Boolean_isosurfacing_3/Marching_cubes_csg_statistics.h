@@ -1,0 +1,112 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_MARCHING_CUBES_CSG_STATISTICS_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_MARCHING_CUBES_CSG_STATISTICS_H
+
+#include <CGAL/Boolean_isosurfacing_3/Algorithm_statistics.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Resolution_check.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// What `marching_cubes_csg()` did, and how long each phase took (wall clock).
+///
+/// `number_of_vertices`, `number_of_faces` (triangles), `seconds` and
+/// `warnings` (an open output, under-resolved components) are those of
+/// `Algorithm_statistics`.
+struct Marching_cubes_csg_statistics : Algorithm_statistics
+{
+  /// Reading the meshes, binning, the x lines and the output state of every point.
+  double seconds_classification = 0;
+  /// The y and z lines and the output vertices (INT_POINT on every edge that needs one).
+  double seconds_edges = 0;
+  /// The cube pass and the output arrays.
+  double seconds_triangulation = 0;
+  /// Points of the lattice.
+  std::size_t lattice_points = 0;
+  /// Crossings of the meshes with lattice edges (all axes).
+  std::size_t crossings = 0;
+  /// \deprecated the same as `number_of_vertices`.
+  std::size_t output_vertices = 0;
+  /// \deprecated the same as `number_of_faces`.
+  std::size_t output_triangles = 0;
+  /// Lattice points on the boundary of the lattice that are inside the
+  /// result.  When it is 0 the output is closed; otherwise the output is
+  /// open where the result meets the lattice boundary (or empty, if every
+  /// point is inside).  It is 0 for a lattice from
+  /// `Regular_lattice_3::enclosing()` (margin >= 1) around the meshes and an
+  /// expression that is false outside all of them (`evaluate(0) == false`).
+  std::size_t boundary_points_inside = 0;
+  /// Sharp features (named parameter `sharp_features`): polygons fanned
+  /// around a feature vertex, of which corners (rank 3); polygons whose
+  /// normals disagree but that keep the plain triangulation (no feature point
+  /// in the cube, or the fan would fold); face segments flipped to join
+  /// neighbouring feature vertices; crease edges output.
+  std::size_t feature_vertices = 0;
+  /// Feature vertices of rank 3 (corners).
+  std::size_t corner_vertices = 0;
+  /// Polygons whose normals disagree by more than the feature angle but that
+  /// keep the plain triangulation.
+  std::size_t plain_feature_polygons = 0;
+  /// Of `plain_feature_polygons`, those whose fan would have folded.
+  std::size_t folded_feature_polygons = 0;
+  /// Face segments flipped to join the feature vertices of neighbouring cubes.
+  std::size_t flipped_edges = 0;
+  /// Flipped edges whose dihedral angle is above the feature angle: the output creases.
+  std::size_t crease_edges = 0;
+  /// Edges between two edge points shorter than `sliver_edge_length` cells
+  /// that were collapsed (see the named parameter).
+  std::size_t collapsed_edges = 0;
+  /// Resolution check (named parameter `resolution_check`, default true):
+  /// the connected components of the inputs inside the lattice's box that
+  /// were judged, and those the lattice does not resolve -- no crossing with
+  /// a lattice edge, or (lattice points inside) x spacing^3 off the exact
+  /// volume by more than a factor 2.  Such a component may be missing from
+  /// the output, or be much too thick there.
+  std::size_t checked_components = 0;
+  /// The components the lattice does not resolve (see `checked_components`).
+  std::vector<Marching_cubes_csg_component_report> under_resolved_components;
+  /// Resolution of the result itself (same named parameter): along the
+  /// lattice lines, the intervals inside or outside the result between two
+  /// of its surface crossings, and those that hold no lattice point --
+  /// walls thinner than a cell, missing from the output, or gaps filled in
+  /// (a difference of nearly coincident solids, say).
+  std::size_t result_intervals = 0;
+  /// The intervals of `result_intervals` that hold no lattice point.
+  std::size_t thin_result_intervals = 0;
+  /// The volume of the thin intervals (line lengths times spacing^2),
+  /// beside `result_line_volume`, the result's volume measured the same way,
+  /// along the axis where their ratio is largest (the lines that cross a
+  /// thin wall see it): a lower bound of the part the output gets wrong.
+  double thin_result_volume = 0;
+  /// The result's volume as the lengths of its line intervals times
+  /// spacing^2, along the axis of `thin_result_volume`.
+  double result_line_volume = 0;
+  /// A spacing that puts lattice points in most thin intervals (half their
+  /// median length), or 0 when there is none.
+  double thin_result_suggested_spacing = 0;
+};
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// The sharp features of a `marching_cubes_csg()` soup (named parameter
+/// `sharp_feature_output(&features)`): crease edges as pairs of output vertex
+/// indices (smaller first), and corner vertices.  Indices are offset like the
+/// triangles'.
+struct Marching_cubes_csg_features
+{
+  /// Crease edges, as pairs of output vertex indices (smaller first).
+  std::vector<std::array<std::size_t, 2>> crease_edges;
+  /// Corner vertices (rank-3 feature vertices).
+  std::vector<std::size_t> corner_vertices;
+};
+
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_MARCHING_CUBES_CSG_STATISTICS_H

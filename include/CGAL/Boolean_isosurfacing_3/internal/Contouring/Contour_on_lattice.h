@@ -1,0 +1,589 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_CONTOURING_CONTOUR_ON_LATTICE_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_CONTOURING_CONTOUR_ON_LATTICE_H
+
+// The contouring of a field on a sparse lattice, and the lattice defaults.
+
+#include <CGAL/Boolean_isosurfacing_3/internal/clear_output_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/Contouring_statistics.h>
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
+#include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
+#include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Iterator_range.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/iterator.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+#include <CGAL/Boolean_isosurfacing_3/internal/Contouring/Cube_rules.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Contouring/Repair.h>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+
+namespace internal {
+
+// The lattice of a contouring: point (i, j, k) is origin + (i, j, k) r,
+// cells[a] cells along axis a.  Sparse: only the cubes the traversal
+// reaches are ever looked at, so it may be far larger than a
+// `Regular_lattice_3` (2^20 cells per axis).
+struct Contouring_lattice
+{
+  std::array<double, 3> origin{{0, 0, 0}};
+  double r = 0;
+  std::array<std::int64_t, 3> cells{{1, 1, 1}};
+};
+
+// The default lattice of `field`, with the named parameters `cell_size`,
+// `cells_along_longest_side` and `lattice_margin`.
+template <typename ContouringField_3, typename NamedParameters>
+Contouring_lattice default_contouring_lattice(const ContouringField_3& field, const NamedParameters& np)
+{
+  typedef typename ContouringField_3::Point_3 Point_3;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Contouring_lattice lattice;
+  const auto& samples = field.points();
+  std::array<double, 3> lo, hi;
+  for(int a = 0; a < 3; ++a)
+  {
+    lo[a] = std::numeric_limits<double>::infinity();
+    hi[a] = -lo[a];
+  }
+  for(const Point_3& p : samples)
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = (std::min)(lo[a], CGAL::to_double(p[a]));
+      hi[a] = (std::max)(hi[a], CGAL::to_double(p[a]));
+    }
+  const double longest = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  double r = internal::default_cell_size(field); // ~1.25 x the mean sample spacing (CGAL's average spacing, 6 neighbours)
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::cell_size_t>::value)
+    r = double(get_parameter(np, internal_np::cell_size));
+  else if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                            internal_np::cells_along_longest_side_t>::value)
+  {
+    const double n = double(get_parameter(np, internal_np::cells_along_longest_side));
+    if(!(n >= 1))
+      throw Invalid_input_error("cells_along_longest_side must be at least 1");
+    r = longest / n;
+  }
+  if(!(r > 0) || !std::isfinite(r))
+    throw Invalid_input_error("the lattice cell size must be positive and finite (got " + std::to_string(r) + ")");
+  // f is defined at most rho + delta beyond the samples (farther, the
+  // projection onto the nearest plane is too far from every sample), so with
+  // this margin the traversal stops at undefined corners, never at the
+  // lattice border: the zero set of f can extend past an open border of the
+  // sample (a tube continuing a cylinder, say) by up to rho + delta.
+  const double default_margin = std::ceil((field.sampling_density() + field.noise_level()) / r) + 2;
+  const double margin = double(choose_parameter(get_parameter(np, internal_np::lattice_margin), default_margin));
+  if(!(margin >= 0) || !std::isfinite(margin))
+    throw Invalid_input_error("lattice_margin must be >= 0");
+  std::array<std::int64_t, 3> cells;
+  for(int a = 0; a < 3; ++a)
+  {
+    lattice.origin[a] = lo[a] - margin * r;
+    const double n = std::ceil((hi[a] - lo[a]) / r + 2 * margin);
+    if(!(n < double(internal::lattice_limit - 1)))
+      throw Invalid_input_error("the lattice would have more than 2^20 cells along an axis; use a larger cell size");
+    cells[a] = (std::max)(std::int64_t(1), std::int64_t(n));
+    lattice.cells[a] = cells[a];
+  }
+  lattice.r = r;
+  return lattice;
+}
+
+// One line per reason the output lacks the closed-2-manifold guarantee.
+inline void add_contouring_warnings(Contouring_statistics& report)
+{
+  if(report.empty_output)
+    report.warnings.push_back("the contour is empty");
+  if(report.border_exits > 0)
+    report.warnings.push_back(std::to_string(report.border_exits) +
+                              " crossed face(s) on the lattice border: the output is open there");
+  if(report.skipped_cubes + report.discontinuous_cubes > 0)
+    report.warnings.push_back(std::to_string(report.skipped_cubes + report.discontinuous_cubes) +
+                              " crossed cube(s) skipped (undefined corner or jump of f); " +
+                              std::to_string(report.filled_holes) + " hole(s) filled");
+}
+
+// The traversal of a contouring, one method per stage: the field at the
+// lattice points (cached), the seeds in the samples' cubes and the flood
+// through crossed faces, the walks down |f| from the other samples, the
+// triangles of the crossed cubes.  Counts go to `report`.
+template <typename ContouringField_3>
+class Contour_traversal
+{
+public:
+  typedef typename ContouringField_3::Point_3 Point_3;
+
+  Contour_traversal(const Contouring_lattice& lattice, const ContouringField_3& field, double max_jump,
+                    Contouring_statistics& report, const Progress& progress)
+    : field(field), samples(field.points()), r(lattice.r), cells(lattice.cells), origin(lattice.origin),
+      max_jump(max_jump), report(report), progress(progress)
+  {
+    value_cache.reserve(4 * samples.size());
+    visited.reserve(4 * samples.size());
+  }
+
+  // Seeds, first pass: the cubes that hold a sample.  With a cell of about
+  // the sample spacing f changes sign in most of them.
+  void seed_from_samples()
+  {
+    sample_xyz.resize(samples.size());
+    for(std::size_t s = 0; s < samples.size(); ++s)
+    {
+      for(int a = 0; a < 3; ++a)
+        sample_xyz[s][a] = CGAL::to_double(samples[s][a]);
+      const std::array<std::int64_t, 3> c = cube_of(sample_xyz[s]);
+      const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
+      if(visited.insert(key).second)
+        stack.push_back(key);
+    }
+    std::sort(stack.begin(), stack.end(), std::greater<std::uint64_t>()); // pop smallest first
+    flood();
+  }
+
+  // Second pass, for cells finer than the offset of the zero set from the
+  // samples (noise, curvature: sphere.pwn's zero set lies 1.4e-3 inside its
+  // samples): from each sample whose cube f does not cross, walk down |f|
+  // (along the gradient of the cube's trilinear interpolant, which is the
+  // tangent plane's normal where the cube's corners share a plane) in steps
+  // of half a cell, to the first crossed cube, at most rho + delta away (the
+  // largest distance at which f is defined).  A walk ends at an undefined
+  // cube, a jump, or a cube already crossed (its piece is traversed).
+  void walk_from_samples()
+  {
+    std::unordered_set<std::uint64_t> crossed_cubes(surface_cubes.begin(), surface_cubes.end());
+    const double walk_length = field.sampling_density() + field.noise_level() + r;
+    const int max_steps = int((std::min)(std::ceil(walk_length / (0.5 * r)), 1e6));
+    for(std::size_t s = 0; s < samples.size(); ++s)
+    {
+      if((s & 1023) == 0)
+        progress.report(0.5 * double(s) / double(samples.size()));
+      std::array<double, 3> q = sample_xyz[s];
+      std::array<std::int64_t, 3> c = cube_of(q);
+      if(crossed_cubes.count(internal::lattice_key(c[0], c[1], c[2])) != 0)
+        continue;
+      if(cube_state(c, values) != Cube_state::uncrossed) // undefined or a jump: nothing to follow
+        continue;
+      for(int step = 0; step < max_steps; ++step)
+      {
+        // The trilinear interpolant of the cube at q: value and gradient.
+        double u[3];
+        for(int a = 0; a < 3; ++a)
+          u[a] = (std::min)(1.0, (std::max)(0.0, (q[a] - origin[a]) / r - double(c[a])));
+        double value = 0, g[3] = {0, 0, 0};
+        for(int k = 0; k < 8; ++k)
+        {
+          double w[3], dw[3];
+          for(int a = 0; a < 3; ++a)
+          {
+            const bool upper = ((k >> a) & 1) != 0;
+            w[a] = upper ? u[a] : 1 - u[a];
+            dw[a] = upper ? 1.0 : -1.0;
+          }
+          value += values[k] * w[0] * w[1] * w[2];
+          g[0] += values[k] * dw[0] * w[1] * w[2];
+          g[1] += values[k] * w[0] * dw[1] * w[2];
+          g[2] += values[k] * w[0] * w[1] * dw[2];
+        }
+        const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if(!(norm > 0) || !std::isfinite(norm))
+          break;
+        // Half a cell towards f = 0 (g is per cell, so g / norm is a unit direction).
+        const double length = (value < 0 ? 0.5 : -0.5) * r / norm;
+        bool outside = false;
+        for(int a = 0; a < 3; ++a)
+        {
+          q[a] += length * g[a];
+          outside = outside || !(q[a] >= origin[a] && q[a] < origin[a] + double(cells[a]) * r);
+        }
+        if(outside)
+          break;
+        const std::array<std::int64_t, 3> next = cube_of(q);
+        if(next == c)
+          continue;
+        c = next;
+        const std::uint64_t key = internal::lattice_key(c[0], c[1], c[2]);
+        const Cube_state state = cube_state(c, values);
+        if(state == Cube_state::crossed)
+        {
+          if(visited.insert(key).second)
+          {
+            const std::size_t before = surface_cubes.size();
+            stack.push_back(key);
+            ++report.walk_seeds;
+            flood();
+            crossed_cubes.insert(surface_cubes.begin() + std::ptrdiff_t(before), surface_cubes.end());
+          }
+          break;
+        }
+        if(state != Cube_state::uncrossed)
+          break;
+      }
+    }
+
+  }
+
+  // The triangles of the crossed cubes, cube by cube in key order, appended;
+  // vertices are welded by lattice edge.  Returns the number of points.
+  template <typename PointOutRange, typename TriangleRange>
+  std::size_t triangulate(PointOutRange& out_points, TriangleRange& out_triangles)
+  {
+    std::sort(surface_cubes.begin(), surface_cubes.end());
+    report.surface_cubes = surface_cubes.size();
+    const Marching_cubes_table& table = Marching_cubes_table::instance();
+    std::unordered_map<std::uint64_t, std::size_t> edge_vertex;
+    edge_vertex.reserve(3 * surface_cubes.size());
+    std::size_t next_vertex = out_points.size();
+    for(const std::uint64_t key : surface_cubes)
+    {
+      const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+      cube_values(c, values); // cached
+      const unsigned code = internal::inside_cube_code(values);
+      const unsigned join = internal::asymptotic_decider_mask(values, code);
+      const unsigned ambiguous = ambiguous_face_mask(code);
+      for(int f = 0; f < 6; ++f)
+        if((ambiguous >> f) & 1u)
+        {
+          ++report.ambiguous_faces;
+          if((join >> f) & 1u)
+            ++report.joined_faces;
+        }
+      std::array<std::size_t, 12 + Marching_cubes_table::max_number_of_polygons> local;
+      local.fill(std::size_t(-1));
+      auto edge_point = [&](int e) -> Point_3 {
+        const std::array<int, 2> ends = cube_edge_corners(e);
+        const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
+        const Point_3 vi = lattice_point(c[0] + o0[0], c[1] + o0[1], c[2] + o0[2]);
+        const Point_3 vj = lattice_point(c[0] + o1[0], c[1] + o1[1], c[2] + o1[2]);
+        const double t = internal::edge_parameter(values[ends[0]], values[ends[1]]);
+        return vi + t * (vj - vi);
+      };
+      auto vertex = [&](unsigned v) -> std::size_t {
+        if(local[v] != std::size_t(-1))
+          return local[v];
+        if(Marching_cubes_table::is_centre_vertex(v))
+        {
+          // Private to this cube: the centroid of its polygon's edge points.
+          double x = 0, y = 0, z = 0;
+          const auto polygon = table.polygon(code, join, v - 12);
+          for(std::size_t i = 0; i < polygon.size(); ++i)
+          {
+            const Point_3 p = edge_point(polygon[i]);
+            x += CGAL::to_double(p.x());
+            y += CGAL::to_double(p.y());
+            z += CGAL::to_double(p.z());
+          }
+          const double m = double(polygon.size());
+          out_points.push_back(Point_3(x / m, y / m, z / m));
+          ++report.centre_vertices;
+          return local[v] = next_vertex++;
+        }
+        const int e = int(v);
+        const std::array<int, 3> o = cube_edge_origin_offset(e);
+        const std::uint64_t edge_key =
+          4 * internal::lattice_key(c[0] + o[0], c[1] + o[1], c[2] + o[2]) + std::uint64_t(cube_edge_axis(e));
+        auto inserted = edge_vertex.emplace(edge_key, next_vertex);
+        if(inserted.second)
+        {
+          out_points.push_back(edge_point(e));
+          ++next_vertex;
+        }
+        return local[v] = inserted.first->second;
+      };
+      for(const auto& t : table.triangles(code, join))
+      {
+        const std::size_t a = vertex(t[0]), b = vertex(t[1]), d = vertex(t[2]);
+        out_triangles.push_back(typename TriangleRange::value_type{a, b, d});
+        ++report.number_of_triangles;
+      }
+    }
+    return next_vertex;
+  }
+
+  double field_seconds() const { return m_field_seconds; }
+
+private:
+  // A cube is "crossed" when its 8 corners are defined, not all of one sign,
+  // and f does not jump along a sign-changing edge.
+  enum class Cube_state { undefined, undefined_crossed, uncrossed, jump, crossed };
+
+  // One formula for every lattice point, so shared corners get identical coordinates.
+  Point_3 lattice_point(std::int64_t i, std::int64_t j, std::int64_t k) const
+  {
+    return Point_3(origin[0] + double(i) * r, origin[1] + double(j) * r, origin[2] + double(k) * r);
+  }
+
+  // The field at a lattice point, cached (NaN = undefined).
+  double value_at(std::int64_t i, std::int64_t j, std::int64_t k)
+  {
+    const std::uint64_t key = internal::lattice_key(i, j, k);
+    auto found = value_cache.find(key);
+    if(found != value_cache.end())
+      return found->second;
+    const auto start = std::chrono::steady_clock::now();
+    const std::optional<double> f = field(lattice_point(i, j, k));
+    m_field_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++report.field_evaluations;
+    double v = std::numeric_limits<double>::quiet_NaN();
+    if(f)
+      v = *f;
+    else
+      ++report.undefined_points;
+    value_cache.emplace(key, v);
+    return v;
+  }
+
+  bool cube_values(const std::array<std::int64_t, 3>& c, std::array<double, 8>& values)
+  {
+    bool defined = true;
+    for(int k = 0; k < 8; ++k)
+    {
+      values[k] = value_at(c[0] + (k & 1), c[1] + ((k >> 1) & 1), c[2] + ((k >> 2) & 1));
+      defined = defined && !std::isnan(values[k]);
+    }
+    return defined;
+  }
+
+  Cube_state cube_state(const std::array<std::int64_t, 3>& c, std::array<double, 8>& v)
+  {
+    const bool defined = cube_values(c, v);
+    // Signs with undefined corners: only the defined ones can witness a crossing.
+    bool has_in = false, has_out = false;
+    for(int k = 0; k < 8; ++k)
+      if(!std::isnan(v[k]))
+        (v[k] < 0 ? has_in : has_out) = true;
+    if(!defined)
+      return (has_in && has_out) ? Cube_state::undefined_crossed : Cube_state::undefined;
+    const unsigned code = internal::inside_cube_code(v);
+    if(code == 0 || code == 0xFF)
+      return Cube_state::uncrossed;
+    return internal::has_jump_edge(v, code, max_jump) ? Cube_state::jump : Cube_state::crossed;
+  }
+
+  std::array<std::int64_t, 3> cube_of(const std::array<double, 3>& p) const
+  {
+    std::array<std::int64_t, 3> c;
+    for(int a = 0; a < 3; ++a)
+      c[a] = (std::min)(cells[a] - 1, (std::max)(std::int64_t(0), std::int64_t(std::floor((p[a] - origin[a]) / r))));
+    return c;
+  }
+
+  // Pops cubes off `stack` and pushes their unvisited neighbours across crossed faces.
+  void flood()
+  {
+    while(!stack.empty())
+    {
+      const std::uint64_t key = stack.back();
+      stack.pop_back();
+      ++report.visited_cubes;
+      // The traversal's extent is unknown beforehand: report 0 as a chance to cancel.
+      if((report.visited_cubes & 0xFFFF) == 0)
+        progress.report(0);
+      const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+      const Cube_state state = cube_state(c, values);
+      if(state == Cube_state::undefined_crossed)
+        ++report.skipped_cubes; // Hoppe: a cube with an undefined corner is skipped
+      else if(state == Cube_state::jump)
+        ++report.discontinuous_cubes; // a jump of f between two planes, not a surface
+      if(state != Cube_state::crossed)
+        continue;
+      const unsigned code = internal::inside_cube_code(values);
+      surface_cubes.push_back(key);
+      for(int f = 0; f < 6; ++f)
+      {
+        const std::array<int, 4> corners = cube_face_corners(f);
+        const bool first = is_inside_corner(code, corners[0]);
+        bool crossed = false;
+        for(int i = 1; i < 4; ++i)
+          crossed = crossed || (is_inside_corner(code, corners[i]) != first);
+        if(!crossed)
+          continue;
+        std::array<std::int64_t, 3> n = c;
+        n[cube_face_axis(f)] += cube_face_side(f) ? 1 : -1;
+        const int a = cube_face_axis(f);
+        if(n[a] < 0 || n[a] >= cells[a])
+        {
+          ++report.border_exits; // the default margin prevents this; it leaves a hole
+          continue;
+        }
+        const std::uint64_t neighbour = internal::lattice_key(n[0], n[1], n[2]);
+        if(visited.insert(neighbour).second)
+          stack.push_back(neighbour);
+      }
+    }
+  }
+
+  const ContouringField_3& field;
+  // The samples, by reference when `points()` returns one, else a copy.
+  typedef decltype(std::declval<const ContouringField_3&>().points()) Samples_result;
+  const std::conditional_t<std::is_reference<Samples_result>::value, Samples_result, std::decay_t<Samples_result>>
+      samples;
+  const double r;
+  const std::array<std::int64_t, 3> cells;
+  const std::array<double, 3> origin;
+  const double max_jump;
+  Contouring_statistics& report;
+  const Progress& progress;
+  std::unordered_map<std::uint64_t, double> value_cache;
+  double m_field_seconds = 0;
+  std::vector<std::uint64_t> stack;
+  std::unordered_set<std::uint64_t> visited;
+  std::vector<std::uint64_t> surface_cubes;
+  std::vector<std::array<double, 3>> sample_xyz;
+  std::array<double, 8> values;
+};
+
+// The contouring on `lattice` (appends to the outputs): the traversal, then
+// the repairs (bubbles removed, small holes closed).
+template <typename ContouringField_3, typename PointOutRange, typename TriangleRange, typename NamedParameters>
+Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, const ContouringField_3& field,
+                                         PointOutRange& out_points, TriangleRange& out_triangles,
+                                         const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto total_start = std::chrono::steady_clock::now();
+  const Progress progress = progress_of(np);
+  Contouring_statistics report;
+  const double r = lattice.r;
+  report.origin = lattice.origin;
+  for(int a = 0; a < 3; ++a)
+    report.number_of_cells[a] = std::size_t(lattice.cells[a]);
+  report.cell_size = r;
+  // A signed distance is 1-Lipschitz: across a lattice edge of length r a true
+  // zero crossing changes f by at most r, plus the noise on both ends.  Hoppe's
+  // f is piecewise planar and jumps where the nearest centre changes; near the
+  // surface those jumps are small, but where two oppositely oriented sheets
+  // are closer than a neighbourhood (thin walls) the nearest centre alternates
+  // between them and f flips sign with a jump of twice the distance to the
+  // wall: "phantom" sheets that run away from the surface.  Such cubes are
+  // skipped (holes instead of phantom sheets).  Factor 3: slack for the plane
+  // switches near the surface; with 2 r, cactus.pts lost 4 genuine cubes.
+  const double max_jump = choose_parameter(get_parameter(np, internal_np::maximum_jump),
+                                           3 * r + 2 * field.noise_level());
+  Contour_traversal<ContouringField_3> traversal(lattice, field, max_jump, report, progress);
+  traversal.seed_from_samples();
+  traversal.walk_from_samples();
+  const std::size_t first_vertex = out_points.size();
+  const std::size_t first_triangle = out_triangles.size();
+  std::size_t next_vertex = traversal.triangulate(out_points, out_triangles);
+  const double field_seconds = traversal.field_seconds();
+  // Bubbles: Hoppe's f is piecewise planar and switches planes at the
+  // Voronoi faces of the centres; in concave regions a lattice point can fall
+  // on the wrong side of a plane that is not the one that matters, and
+  // becomes a closed surface around one or two lattice points.  A closed
+  // component smaller than rho is below what a rho-dense sample can witness.
+  const double bubble_size = choose_parameter(get_parameter(np, internal_np::minimum_closed_component_size),
+                                              field.sampling_density());
+  if(!(bubble_size >= 0))
+    throw Invalid_input_error("minimum_closed_component_size must be >= 0");
+  if(bubble_size > 0)
+  {
+    report.removed_closed_components =
+      internal::remove_small_closed_components(out_points, out_triangles, first_vertex, first_triangle, bubble_size);
+    next_vertex = out_points.size();
+    report.number_of_triangles = out_triangles.size() - first_triangle;
+  }
+  // Holes: a skipped cube (undefined corner, jump of f)
+  // leaves a hole in an otherwise closed surface.  Without one the soup is a
+  // closed 2-manifold by construction, and nothing is done.
+  // (Lattice-border exits are not repaired: the default margin prevents them,
+  // and a lattice cut short by lattice_margin is open there on purpose.)
+  if(report.skipped_cubes + report.discontinuous_cubes > 0 &&
+     out_triangles.size() > first_triangle)
+  {
+    const double hole_size = choose_parameter(get_parameter(np, internal_np::maximum_hole_size),
+                                              2 * field.sampling_density());
+    const auto repaired =
+      internal::close_small_holes(out_points, out_triangles, first_vertex, first_triangle, hole_size);
+    report.split_vertices = repaired.first;
+    report.filled_holes = repaired.second;
+    next_vertex = out_points.size();
+    report.number_of_triangles = out_triangles.size() - first_triangle;
+  }
+  report.number_of_vertices = next_vertex - first_vertex;
+  report.number_of_faces = report.number_of_triangles;
+  report.empty_output = report.number_of_triangles == 0;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count();
+  report.seconds_field = field_seconds;
+  report.seconds_contouring = report.seconds - field_seconds;
+  report.field_seconds = report.seconds_field;
+  report.contouring_seconds = report.seconds_contouring;
+  add_contouring_warnings(report);
+  progress.report(1.0);
+  return report;}
+
+} // namespace internal
+
+
+namespace internal {
+
+// The mesh of a contouring soup (cleared first); pinched vertices between two
+// holes are duplicated (PMP::orient_polygon_soup) so that the mesh is valid.
+template <typename Point, typename PolygonMesh>
+void contour_soup_to_mesh(std::vector<Point>& soup_points, std::vector<std::array<std::size_t, 3>>& soup_triangles,
+                          PolygonMesh& mesh)
+{
+  internal::clear_output_mesh(mesh);
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup_triangles))
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(soup_points, soup_triangles);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup_triangles, mesh);
+}
+
+} // namespace internal
+
+namespace internal {
+
+inline Contouring_lattice to_contouring_lattice(const Regular_lattice_3& lattice)
+{
+  Contouring_lattice l;
+  l.r = lattice.spacing();
+  for(int a = 0; a < 3; ++a)
+  {
+    l.origin[a] = lattice.coordinate(a, 0);
+    if(lattice.number_of_points(a) < 2)
+      throw Invalid_input_error("a contouring lattice needs at least 2 points along every axis");
+    if(lattice.number_of_points(a) - 1 >= std::size_t(lattice_limit - 1))
+      throw Invalid_input_error("the lattice has more than 2^20 cells along an axis");
+    l.cells[a] = std::int64_t(lattice.number_of_points(a) - 1);
+  }
+  return l;
+}
+
+} // namespace internal
+
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_CONTOURING_CONTOUR_ON_LATTICE_H

@@ -1,0 +1,237 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_CONTOURING_REPAIR_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_CONTOURING_REPAIR_H
+
+// The repairs after the contouring: small closed components (bubbles)
+// removed, small holes closed.
+
+#include <CGAL/Boolean_isosurfacing_3/Contouring_statistics.h>
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
+#include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
+#include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Iterator_range.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/iterator.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+
+namespace internal {
+
+/// Removes, from the triangles appended from `first_triangle` on (whose
+/// vertices are the points from `first_vertex` on), every connected component
+/// that is closed (each of its edges in exactly 2 of its triangles) and whose
+/// bounding box has a diagonal below `min_diagonal`.  Returns how many.
+template <typename PointOutRange, typename TriangleRange>
+std::size_t remove_small_closed_components(PointOutRange& points, TriangleRange& triangles, std::size_t first_vertex,
+                                           std::size_t first_triangle, double min_diagonal)
+{
+  const std::size_t nv = points.size() - first_vertex;
+  std::vector<std::size_t> parent(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    parent[v] = v;
+  auto find = [&parent](std::size_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+    for(int i = 1; i < 3; ++i)
+    {
+      const std::size_t a = find(std::size_t(triangles[t][0]) - first_vertex);
+      const std::size_t b = find(std::size_t(triangles[t][i]) - first_vertex);
+      if(a != b)
+        parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  std::vector<std::array<double, 6>> box(nv, {{std::numeric_limits<double>::infinity(),
+                                              std::numeric_limits<double>::infinity(),
+                                              std::numeric_limits<double>::infinity(),
+                                              -std::numeric_limits<double>::infinity(),
+                                              -std::numeric_limits<double>::infinity(),
+                                              -std::numeric_limits<double>::infinity()}});
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    std::array<double, 6>& b = box[find(v)];
+    for(int a = 0; a < 3; ++a)
+    {
+      const double x = CGAL::to_double(points[first_vertex + v][a]);
+      b[a] = (std::min)(b[a], x);
+      b[3 + a] = (std::max)(b[3 + a], x);
+    }
+  }
+  std::vector<char> small(nv, 0);
+  bool any = false;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(parent[v] == v)
+    {
+      const std::array<double, 6>& b = box[v];
+      const double d2 = (b[3] - b[0]) * (b[3] - b[0]) + (b[4] - b[1]) * (b[4] - b[1]) + (b[5] - b[2]) * (b[5] - b[2]);
+      small[v] = d2 < min_diagonal * min_diagonal;
+      any = any || small[v];
+    }
+  if(!any)
+    return 0;
+  // Closedness of the small components: their undirected edges, sorted.
+  std::vector<std::array<std::size_t, 3>> edges; // root, lower vertex, upper vertex
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+  {
+    const std::size_t root = find(std::size_t(triangles[t][0]) - first_vertex);
+    if(small[root])
+      for(int i = 0; i < 3; ++i)
+      {
+        const std::size_t a = std::size_t(triangles[t][i]), b = std::size_t(triangles[t][(i + 1) % 3]);
+        edges.push_back({{root, (std::min)(a, b), (std::max)(a, b)}});
+      }
+  }
+  std::sort(edges.begin(), edges.end());
+  for(std::size_t e = 0; e < edges.size();)
+  {
+    std::size_t end = e + 1;
+    while(end < edges.size() && edges[end] == edges[e])
+      ++end;
+    if(end - e != 2)
+      small[edges[e][0]] = 0; // has a border or non-manifold edge: not a bubble
+    e = end;
+  }
+  std::size_t removed = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(parent[v] == v && small[v])
+      ++removed;
+  if(removed == 0)
+    return 0;
+  // Compact, keeping the order of what stays.
+  std::vector<std::size_t> new_index(nv, std::size_t(-1));
+  std::vector<typename PointOutRange::value_type> kept_points;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(!small[find(v)])
+    {
+      new_index[v] = first_vertex + kept_points.size();
+      kept_points.push_back(points[first_vertex + v]);
+    }
+  std::vector<typename TriangleRange::value_type> kept_triangles;
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+    if(!small[find(std::size_t(triangles[t][0]) - first_vertex)])
+    {
+      const auto& tri = triangles[t];
+      kept_triangles.push_back(typename TriangleRange::value_type{new_index[std::size_t(tri[0]) - first_vertex],
+                                                                  new_index[std::size_t(tri[1]) - first_vertex],
+                                                                  new_index[std::size_t(tri[2]) - first_vertex]});
+    }
+  points.erase(points.begin() + std::ptrdiff_t(first_vertex), points.end());
+  points.insert(points.end(), kept_points.begin(), kept_points.end());
+  triangles.erase(triangles.begin() + std::ptrdiff_t(first_triangle), triangles.end());
+  triangles.insert(triangles.end(), kept_triangles.begin(), kept_triangles.end());
+  return removed;
+}
+
+/// Repairs the holes that skipped cubes leave (issue 18), on the triangles
+/// appended from `first_triangle` on (vertices from `first_vertex` on):
+///  1. vertices pinched between two holes (two skipped cubes diagonal around
+///     a lattice edge) are split (PMP::orient_polygon_soup), so the soup is an
+///     oriented 2-manifold with border;
+///  2. each border loop whose bounding box has a diagonal of at most
+///     `max_hole_diagonal` is filled (PMP::triangulate_hole, no new vertex).
+/// Larger loops (the border of an open sample, an unsampled region wider
+/// than the hole limit) stay.  Returns (vertices split, holes filled).
+template <typename PointOutRange, typename TriangleRange>
+std::pair<std::size_t, std::size_t> close_small_holes(PointOutRange& points, TriangleRange& triangles,
+                                                      std::size_t first_vertex, std::size_t first_triangle,
+                                                      double max_hole_diagonal)
+{
+  typedef typename std::decay<decltype(points[0])>::type Point_3;
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<Point_3> soup_points(points.begin() + std::ptrdiff_t(first_vertex), points.end());
+  std::vector<std::array<std::size_t, 3>> soup;
+  soup.reserve(triangles.size() - first_triangle);
+  for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+    soup.push_back({{std::size_t(triangles[t][0]) - first_vertex, std::size_t(triangles[t][1]) - first_vertex,
+                     std::size_t(triangles[t][2]) - first_vertex}});
+  const std::size_t before = soup_points.size();
+  if(!PMP::is_polygon_soup_a_polygon_mesh(soup))
+    PMP::orient_polygon_soup(soup_points, soup);
+  const std::size_t split = soup_points.size() - before;
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(soup_points, soup, mesh);
+  std::vector<typename Mesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  // A loop is a hole of a surface only if its component is larger than the
+  // loop limit: a small open piece (one cube's triangles) bounded by the loop
+  // would become a doubled patch.
+  auto component = mesh.template add_property_map<typename Mesh::Face_index, std::size_t>("f:biso_cc", 0).first;
+  const std::size_t number_of_components = PMP::connected_components(mesh, component);
+  std::vector<Bbox_3> component_box(number_of_components);
+  for(const auto f : mesh.faces())
+    for(const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      component_box[component[f]] += mesh.point(v).bbox();
+  std::size_t filled = 0;
+  for(const auto h : cycles)
+  {
+    if(!mesh.is_border(h))
+      continue;
+    const Bbox_3& piece = component_box[component[mesh.face(mesh.opposite(h))]];
+    if(CGAL::square(piece.xmax() - piece.xmin()) + CGAL::square(piece.ymax() - piece.ymin()) +
+         CGAL::square(piece.zmax() - piece.zmin()) <= max_hole_diagonal * max_hole_diagonal)
+      continue;
+    Bbox_3 box;
+    for(const auto g : CGAL::halfedges_around_face(h, mesh))
+      box += mesh.point(mesh.target(g)).bbox();
+    const double d2 = CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                      CGAL::square(box.zmax() - box.zmin());
+    if(!(d2 <= max_hole_diagonal * max_hole_diagonal))
+      continue;
+    PMP::triangulate_hole(mesh, h, CGAL::Emptyset_iterator());
+    ++filled;
+  }
+  // Back to the soup: vertex order is kept (the hole filling adds no vertex).
+  std::vector<Point_3> new_points;
+  std::vector<std::array<std::size_t, 3>> new_soup;
+  mesh.remove_property_map(component);
+  PMP::polygon_mesh_to_polygon_soup(mesh, new_points, new_soup);
+  points.erase(points.begin() + std::ptrdiff_t(first_vertex), points.end());
+  for(const Point_3& p : new_points)
+    points.push_back(p);
+  triangles.erase(triangles.begin() + std::ptrdiff_t(first_triangle), triangles.end());
+  for(const auto& t : new_soup)
+    triangles.push_back(typename TriangleRange::value_type{t[0] + first_vertex, t[1] + first_vertex,
+                                                           t[2] + first_vertex});
+  return {split, filled};
+}
+
+} // namespace internal
+
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_CONTOURING_REPAIR_H
