@@ -287,7 +287,7 @@ void weld_chunk(Tbiso_chunk& chunk, const Lookup& lookup, const Publish& publish
         // neighbour has the edge v -> u.
         std::vector<std::size_t> between;
         for(std::size_t w : sorted)
-          if(w != u && w != v && (before(u, w) && before(w, v) || before(v, w) && before(w, u)))
+          if(w != u && w != v && ((before(u, w) && before(w, v)) || (before(v, w) && before(w, u))))
             between.push_back(w);
         if(between.empty())
           continue;
