@@ -71,6 +71,23 @@ struct Cancel_after
   bool operator()(double) const { return ++*seen <= calls; }
 };
 
+// A ball of radius 0.7 cut by the plane x = 0.1 ("f0 & f1") on an n^3
+// tetrahedral grid over [-1, 1]^3: a surface with a crease loop.
+struct Tbiso_case
+{
+  explicit Tbiso_case(std::size_t n)
+    : grid(BI::Tetrahedral_grid_3<K>::spanning(Point(-1, -1, -1), Point(1, 1, 1), {{n, n, n}})),
+      fields(BI::sample_fields(
+          grid, std::vector<std::function<double(const Point&)>>{
+                    [](const Point& p) { return std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))) - 0.7; },
+                    [](const Point& p) { return p.x() - 0.1; }})),
+      expression(BI::Boolean_expression::parse("f0 & f1"))
+  {}
+  BI::Tetrahedral_grid_3<K> grid;
+  BI::Scalar_fields fields;
+  BI::Boolean_expression expression;
+};
+
 } // namespace
 
 TEST(ApiConvention, Csg_outputs_are_cleared_first)
@@ -214,13 +231,10 @@ TEST(ApiConvention, Contouring_outputs_cleared_tag_callback_and_statistics)
 
 TEST(ApiConvention, Tbiso_outputs_cleared_callback_and_statistics)
 {
-  typedef BI::Tetrahedral_grid_3<K> Grid;
-  const Grid grid = Grid::spanning(Point(-1, -1, -1), Point(1, 1, 1), {{24, 24, 24}});
-  const std::vector<std::function<double(const Point&)>> f{
-      [](const Point& p) { return std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))) - 0.7; },
-      [](const Point& p) { return p.x() - 0.1; }};
-  const BI::Scalar_fields fields = BI::sample_fields(grid, f);
-  const BI::Boolean_expression e = BI::Boolean_expression::parse("f0 & f1");
+  const Tbiso_case c(24);
+  const auto& grid = c.grid;
+  const auto& fields = c.fields;
+  const auto& e = c.expression;
   BI::Boolean_isosurface_soup<Point> soup;
   const BI::Boolean_isosurface_statistics s = BI::extract_boolean_isosurface(grid, fields, e, soup);
   ASSERT_GT(soup.polygons.size(), 100u);
@@ -242,13 +256,10 @@ TEST(ApiConvention, Tbiso_outputs_cleared_callback_and_statistics)
 
 TEST(ApiConvention, Tbiso_mesh_output_side_maps)
 {
-  typedef BI::Tetrahedral_grid_3<K> Grid;
-  const Grid grid = Grid::spanning(Point(-1, -1, -1), Point(1, 1, 1), {{20, 20, 20}});
-  const std::vector<std::function<double(const Point&)>> f{
-      [](const Point& p) { return std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))) - 0.7; },
-      [](const Point& p) { return p.x() - 0.1; }};
-  const BI::Scalar_fields fields = BI::sample_fields(grid, f);
-  const BI::Boolean_expression e = BI::Boolean_expression::parse("f0 & f1");
+  const Tbiso_case c(20);
+  const auto& grid = c.grid;
+  const auto& fields = c.fields;
+  const auto& e = c.expression;
   BI::Boolean_isosurface_soup<Point> soup;
   BI::extract_boolean_isosurface(grid, fields, e, soup);
   const BI::Crease_network creases = BI::extract_crease_network(soup);
