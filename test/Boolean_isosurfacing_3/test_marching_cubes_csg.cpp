@@ -299,7 +299,9 @@ TEST(RegularLattice, BadParametersThrow)
   EXPECT_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{2, 0, 2}}), BI::Invalid_input_error);
   // Spacing lost in the rounding of the coordinates.
   EXPECT_THROW(BI::Regular_lattice_3({{1e20, 0, 0}}, 1.0, {{3, 2, 2}}), BI::Invalid_input_error);
-  EXPECT_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{2048, 2048, 1024}}), BI::Lattice_too_large_error);
+  // Beyond 2^62 points linear_index() would overflow; 2^32 points are fine.
+  EXPECT_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{1u << 21, 1u << 21, 1u << 21}}), BI::Lattice_too_large_error);
+  EXPECT_NO_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{2048, 2048, 1024}}));
   EXPECT_THROW(BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(), 0.1), BI::Invalid_input_error);
   EXPECT_THROW(BI::Regular_lattice_3::enclosing(unit, 0.0), BI::Invalid_input_error);
   EXPECT_THROW(BI::Regular_lattice_3::enclosing_with_cells(CGAL::Bbox_3(1, 1, 1, 1, 1, 1), 10),
@@ -312,7 +314,7 @@ TEST(RegularLattice, BadParametersThrow)
   }
   catch(const BI::Lattice_too_large_error& e)
   {
-    EXPECT_NE(std::string(e.what()).find("2^31"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("2^62"), std::string::npos) << e.what();
   }
 }
 
@@ -394,8 +396,8 @@ TEST(LatticeClassifier, LatticeCoveringOnlyPartOfTheMesh)
   EXPECT_FALSE(soup.triangles.empty());
 }
 
-// 9 meshes (2-byte masks) and 33 meshes (8-byte masks): every bit of the
-// mask is the classification of that mesh alone.
+// 9 meshes and 33 meshes (more bits than a byte or a word): every bit of
+// the mask is the classification of that mesh alone.
 TEST(LatticeClassifier, ManyMeshesUseWiderMasks)
 {
   for(std::size_t count : {9u, 33u})
@@ -412,7 +414,6 @@ TEST(LatticeClassifier, ManyMeshesUseWiderMasks)
       pointers.push_back(&m);
     const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(bbox_of(pointers), 28);
     const BI::Lattice_classifier_3 classifier = BI::Lattice_classifier_3::classify(spheres, lattice);
-    EXPECT_EQ(classifier.bytes_per_mask(), count <= 16 ? 2u : 8u);
     EXPECT_EQ(classifier.number_of_inconsistent_edges(), 0u);
     for(std::size_t m = 0; m < count; m += 4)
     {
@@ -915,6 +916,51 @@ TEST(McCsgParallel, IdenticalToSequential)
 #endif
 }
 
+// ------------------------------------------------------------------ sparse lattice
+
+// The lattice is never stored point by point: a lattice of 2.7e10 points
+// (a dense byte per point would be 25 GB) around a box a few cells wide
+// costs its lines and crossings only.  The output is the one of a small
+// lattice of the same spacing around the box: same counts, same volume.
+TEST(McCsgSparse, HugeLatticeAroundASmallBoxEqualsASmallLattice)
+{
+  const double r = 1.0 / 1024;
+  const Mesh box = make_box(Point(1.5 + 0.31 * r, 1.5 + 0.27 * r, 1.5 + 0.45 * r),
+                            Point(1.5 + 4.63 * r, 1.5 + 3.72 * r, 1.5 + 5.18 * r));
+  const std::vector<const Mesh*> meshes = {&box};
+  const BI::Boolean_expression a = BI::Boolean_expression::single(0, 1);
+  const BI::Regular_lattice_3 huge({{0, 0, 0}}, r, {{3000, 3000, 3000}});
+  // The small lattice's points 0..9 are the huge one's points 1536..1545.
+  const BI::Regular_lattice_3 small({{1.5, 1.5, 1.5}}, r, {{10, 10, 10}});
+  ASSERT_EQ(huge.coordinate(0, 1536), 1.5);
+  const Soup far = run_csg(meshes, a, huge);
+  const Soup near = run_csg(meshes, a, small);
+  EXPECT_EQ(far.statistics.lattice_points, std::size_t(3000) * 3000 * 3000);
+  EXPECT_EQ(far.points.size(), near.points.size());
+  EXPECT_EQ(far.triangles.size(), near.triangles.size());
+  const double exact = 4.32 * 3.45 * 4.73 * r * r * r;
+  const double volume = check_output(far, "huge lattice");
+  EXPECT_NEAR(volume, exact, 1e-9 * exact);
+  EXPECT_NEAR(check_output(near, "small lattice"), volume, 1e-12 * exact);
+}
+
+// A lattice with 2^26 points or more along an axis is refused (the width
+// of a crossing's index), with the axis and the limit.
+TEST(McCsgSparse, AxisOfTwoToThe26PointsIsRefused)
+{
+  const Mesh box = make_box(Point(0.1, 0.1, 0.1), Point(0.2, 0.2, 0.2));
+  const BI::Regular_lattice_3 lattice({{0, 0, 0}}, 1.0 / (1u << 26), {{std::size_t(1) << 26, 4, 4}});
+  try
+  {
+    BI::Lattice_classifier_3::classify(std::vector<Mesh>{box}, lattice);
+    ADD_FAILURE() << "no exception";
+  }
+  catch(const BI::Lattice_too_large_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("along x"), std::string::npos) << e.what();
+  }
+}
+
 // ------------------------------------------------------------------ API variants
 
 TEST(McCsgApi, SurfaceMeshOutputVectorTrianglesProgressAndAppending)
@@ -1113,7 +1159,7 @@ TEST(McCsgBadInput, SpecificExceptionsWithClearMessages)
       "has 2 variable(s) but 3 mesh(es)");
 
   expect_error<BI::Lattice_too_large_error>(
-      [&] { BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1e-9); }, "2^31");
+      [&] { BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1e-9); }, "2^62");
   // The memory limit.
   expect_error<BI::Lattice_too_large_error>(
       [&] {

@@ -588,9 +588,10 @@ TEST_F(CsgTool, TooManyCellsIsRefusedWithTheEstimateAndTheLimit)
   EXPECT_EQ(r.err.find("not a whole number"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--cells 2000000"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("would have 8e+18 points"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("2^31"), std::string::npos) << r.err;
-  // Below the point limit but above a small memory limit: the estimate in GiB.
-  const Result m = run(a + " " + a + " --op union --cells 1000 --max-memory 0.5");
+  EXPECT_NE(r.err.find("2^62"), std::string::npos) << r.err;
+  // Below the point limit but above a small memory limit: the estimate in GiB
+  // (the lattice is sparse: what grows is the crossings of the box's faces).
+  const Result m = run(a + " " + a + " --op union --cells 4000 --max-memory 0.5");
   EXPECT_EQ(m.status, 1) << m.err;
   EXPECT_TRUE(is_one_clean_line(m.err));
   EXPECT_NE(m.err.find("GiB, more than the limit of 0.5 GiB (--max-memory)"), std::string::npos) << m.err;

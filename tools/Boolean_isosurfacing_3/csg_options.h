@@ -151,10 +151,10 @@ inline void check_options(Tool& tool, Options& o, const Option_text& t)
   }
   if(app.count("--cells"))
   {
-    // Each axis of a lattice has fewer than 2^31 points; whether the whole
+    // Each axis of a lattice has fewer than 2^26 points; whether the whole
     // lattice fits is decided once the inputs' box is known.
-    o.cells = biso_tools::parse_count("--cells", t.cells, 1, (std::size_t(1) << 31) - 8,
-                                      "a lattice has at most 2^31 points");
+    o.cells = biso_tools::parse_count("--cells", t.cells, 1, (std::size_t(1) << 26) - 8,
+                                      "a lattice has fewer than 2^26 points along an axis");
     o.lattice_flag = "--cells " + t.cells;
   }
   if(app.count("--spacing"))

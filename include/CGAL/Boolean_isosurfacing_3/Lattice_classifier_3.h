@@ -10,7 +10,6 @@
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Mesh_triangles_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 
@@ -25,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -42,12 +42,15 @@ namespace Boolean_isosurfacing {
 /// combinatorial decision (those are exact).  `triangle` is the crossed
 /// triangle: its number among the triangles of all meshes, mesh 0 first, each
 /// mesh's faces in `faces()` order (it gives `marching_cubes_csg()` the exact
-/// tangent plane of the crossing).
+/// tangent plane of the crossing).  16 bytes: the index and the mesh share
+/// one word (a lattice has fewer than 2^26 points along an axis, and there
+/// are at most 64 meshes), because the crossings are most of the memory of
+/// a fine lattice.
 struct Lattice_crossing
 {
   double position;
-  std::uint32_t index;
-  std::uint32_t mesh;
+  std::uint32_t index : 26;
+  std::uint32_t mesh : 6;
   std::uint32_t triangle = 0;
 };
 
@@ -79,11 +82,16 @@ struct Lattice_crossing
  * projection (3 exact orient2d); the crossing's index along the line is a
  * double estimate corrected by exact orient3d tests.  The x lines give the
  * classification (toggle the mesh bit at each crossing index, then a prefix
- * XOR along the line): O(points + crossings + triangles), no sorting of
+ * XOR along the line): O(lines + crossings + triangles), no sorting of
  * lattice points, no ray shooting.
  *
- * Memory: one mask of 1, 2, 4 or 8 bytes (up to 8, 16, 32, 64 meshes) per
- * lattice point, plus 16 bytes per crossing and 8 bytes per lattice line.
+ * The classification is stored *sparsely*: a point's mask is the mask of the
+ * first point of its x line (`start_mask()`) toggled by the crossings of the
+ * line before it, so no per-point array exists.  Memory: 16 bytes per
+ * crossing, 4 bytes per lattice line and 8 more per x line, so it grows with
+ * the surface (crossings) and the lattice's cross-sections (lines), not with
+ * its volume.  `mask()` costs a walk along the point's x line; algorithms walk
+ * the lines themselves (`crossings_on_line()`).
  */
 class Lattice_classifier_3
 {
@@ -108,6 +116,9 @@ public:
   };
 
   static constexpr std::size_t max_number_of_meshes = 64;
+  /// Points along an axis must be fewer than this (2^26): the width of
+  /// `Lattice_crossing::index`.
+  static constexpr std::size_t max_points_per_axis = std::size_t(1) << 26;
   /// Default of the named parameter `max_memory_bytes`: 8 GiB.
   static constexpr std::size_t default_max_memory_bytes = std::size_t(8) << 30;
 
@@ -206,20 +217,8 @@ public:
                                                  const internal::Progress& progress)
   {
     Lattice_classifier_3 result(lattice, number_of_meshes);
-    if(number_of_meshes <= 8)
-      result.template run<ConcurrencyTag, std::uint8_t>(triangles, max_memory_bytes, reserved_bytes, progress);
-    else if(number_of_meshes <= 16)
-      result.template run<ConcurrencyTag, std::uint16_t>(triangles, max_memory_bytes, reserved_bytes, progress);
-    else if(number_of_meshes <= 32)
-      result.template run<ConcurrencyTag, std::uint32_t>(triangles, max_memory_bytes, reserved_bytes, progress);
-    else
-      result.template run<ConcurrencyTag, std::uint64_t>(triangles, max_memory_bytes, reserved_bytes, progress);
+    result.template run<ConcurrencyTag>(triangles, max_memory_bytes, reserved_bytes, progress);
     return result;
-  }
-
-  static std::size_t bytes_per_mask(std::size_t number_of_meshes)
-  {
-    return number_of_meshes <= 8 ? 1 : (number_of_meshes <= 16 ? 2 : (number_of_meshes <= 32 ? 4 : 8));
   }
   /// \endcond
 
@@ -231,43 +230,43 @@ public:
   /// The number of meshes (bits of a mask).
   std::size_t number_of_meshes() const { return m_number_of_meshes; }
 
-  /// Bytes per lattice point of the masks: 1, 2, 4 or 8.
-  std::size_t bytes_per_mask() const { return bytes_per_mask(m_number_of_meshes); }
+  /// Bit m set iff the first point (i = 0) of x line `x_line` (see
+  /// `line_index()`) is inside mesh m.
+  std::uint64_t start_mask(std::size_t x_line) const
+  {
+    CGAL_precondition(x_line < m_start_masks.size());
+    return m_start_masks[x_line];
+  }
 
-  /// Bit m set iff lattice point `linear_index` is inside mesh m.
+  /// Bit m set iff lattice point (i, j, k) is inside mesh m: the line's
+  /// start mask toggled by the crossings before the point (O(crossings on
+  /// the x line)).
+  std::uint64_t mask(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    CGAL_precondition(i < m_lattice.number_of_points(0) && j < m_lattice.number_of_points(1) &&
+                      k < m_lattice.number_of_points(2));
+    const std::size_t line = line_index(0, i, j, k);
+    std::uint64_t mask = m_start_masks[line];
+    for(const Crossing& c : crossings_on_line(0, line))
+    {
+      if(c.index > i)
+        break;
+      mask ^= std::uint64_t(1) << c.mesh;
+    }
+    return mask;
+  }
+  /// The mask of the lattice point of index `linear_index` (`Regular_lattice_3::linear_index()`).
   std::uint64_t mask(std::size_t linear_index) const
   {
     CGAL_precondition(linear_index < m_lattice.total_number_of_points());
-    switch(bytes_per_mask())
-    {
-    case 1: return m_masks8[linear_index];
-    case 2: return m_masks16[linear_index];
-    case 4: return m_masks32[linear_index];
-    default: return m_masks64[linear_index];
-    }
+    const std::size_t nx = m_lattice.number_of_points(0), ny = m_lattice.number_of_points(1);
+    return mask(linear_index % nx, (linear_index / nx) % ny, linear_index / (nx * ny));
   }
-  /// The mask of lattice point (i, j, k).
-  std::uint64_t mask(std::size_t i, std::size_t j, std::size_t k) const { return mask(m_lattice.linear_index(i, j, k)); }
 
   /// true iff lattice point (i, j, k) is inside mesh `mesh`.
   bool is_inside(std::size_t mesh, std::size_t i, std::size_t j, std::size_t k) const
   {
     return ((mask(i, j, k) >> mesh) & 1) != 0;
-  }
-
-  /// Calls `f(const Mask* masks)` with the mask array (indexed by
-  /// `Regular_lattice_3::linear_index()`), `Mask` the unsigned type of
-  /// `bytes_per_mask()` bytes, and returns what `f` returns.
-  template <typename F>
-  decltype(auto) visit_masks(F&& f) const
-  {
-    switch(bytes_per_mask())
-    {
-    case 1: return f(m_masks8.data());
-    case 2: return f(m_masks16.data());
-    case 4: return f(m_masks32.data());
-    default: return f(m_masks64.data());
-    }
   }
 
   /// Number of lattice lines along `axis`.
@@ -335,37 +334,70 @@ public:
   /// edge.  Zero by construction for closed meshes; O(points + crossings).
   std::size_t number_of_inconsistent_edges() const
   {
-    return visit_masks([this](const auto* masks) {
-      typedef std::remove_const_t<std::remove_pointer_t<decltype(masks)>> Mask;
-      const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
-      const std::array<std::size_t, 3> stride{{1, n[0], n[0] * n[1]}};
-      std::size_t bad = 0;
-      for(int axis = 0; axis < 3; ++axis)
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    const std::size_t nx = n[0], ny = n[1], nz = n[2];
+    std::size_t bad = 0;
+    // Toggles of the crossings on one edge (index t) from `c` on; counts
+    // crossings out of order or out of range as inconsistent.
+    auto toggles_at = [](const Crossing*& c, const Crossing* end, std::size_t t) {
+      std::uint64_t toggles = 0;
+      for(; c != end && c->index == t; ++c)
+        toggles ^= std::uint64_t(1) << c->mesh;
+      return toggles;
+    };
+    // The masks of plane k, from the x lines (which define them).
+    auto plane_masks = [&](std::size_t k, std::vector<std::uint64_t>& masks) {
+      for(std::size_t j = 0; j < ny; ++j)
       {
-        const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
-        for(std::size_t jv = 0; jv < n[v]; ++jv)
-          for(std::size_t ju = 0; ju < n[u]; ++ju)
-          {
-            const Crossing_range line = crossings_on_line(axis, ju + n[u] * jv);
-            const std::size_t start = ju * stride[u] + jv * stride[v];
-            const Crossing* c = line.begin();
-            for(std::size_t t = 1; t < n[axis]; ++t)
-            {
-              Mask toggles = 0;
-              for(; c != line.end() && c->index == t; ++c)
-                toggles ^= Mask(Mask(1) << c->mesh);
-              const Mask change = Mask(masks[start + (t - 1) * stride[axis]] ^ masks[start + t * stride[axis]]);
-              bad += std::size_t(internal::popcount64(std::uint64_t(Mask(change ^ toggles))));
-            }
-            if(c != line.end()) // crossings out of order or out of range
-              bad += std::size_t(line.end() - c);
-          }
+        const Crossing_range line = crossings_on_line(0, j + ny * k);
+        const Crossing* c = line.begin();
+        std::uint64_t mask = m_start_masks[j + ny * k];
+        for(std::size_t i = 0; i < nx; ++i)
+        {
+          mask ^= i == 0 ? 0 : toggles_at(c, line.end(), i);
+          masks[i + nx * j] = mask;
+        }
+        if(c != line.end())
+          bad += std::size_t(line.end() - c);
       }
-      return bad;
-    });
+    };
+    std::vector<std::uint64_t> low(nx * ny), high(nx * ny);
+    // Cursors of the z lines, advanced plane by plane.
+    std::vector<const Crossing*> z_cursor(nx * ny);
+    for(std::size_t l = 0; l < nx * ny; ++l)
+      z_cursor[l] = crossings_on_line(2, l).begin();
+    for(std::size_t k = 0; k < nz; ++k)
+    {
+      plane_masks(k, high);
+      for(std::size_t i = 0; i < nx; ++i)
+      {
+        const Crossing_range line = crossings_on_line(1, i + nx * k);
+        const Crossing* c = line.begin();
+        for(std::size_t j = 1; j < ny; ++j)
+        {
+          const std::uint64_t change = high[i + nx * (j - 1)] ^ high[i + nx * j];
+          bad += std::size_t(internal::popcount64(change ^ toggles_at(c, line.end(), j)));
+        }
+        if(c != line.end())
+          bad += std::size_t(line.end() - c);
+      }
+      if(k > 0)
+        for(std::size_t l = 0; l < nx * ny; ++l)
+        {
+          const std::uint64_t change = low[l] ^ high[l];
+          bad += std::size_t(internal::popcount64(change ^ toggles_at(z_cursor[l], crossings_on_line(2, l).end(), k)));
+        }
+      std::swap(low, high);
+    }
+    for(std::size_t l = 0; l < nx * ny; ++l)
+      bad += std::size_t(crossings_on_line(2, l).end() - z_cursor[l]);
+    return bad;
   }
 
 private:
+  // Offsets of the lines into the crossings of their axis (checked to fit).
+  typedef std::uint32_t Line_offset;
+
   // One crossing of a row of lines (the lines along an axis with a common v index).
   struct Row_crossing
   {
@@ -401,22 +433,6 @@ private:
     : m_lattice(lattice), m_number_of_meshes(number_of_meshes)
   {}
 
-  template <typename Mask>
-  using Mask_vector = std::vector<Mask, internal::Default_init_allocator<Mask>>;
-
-  template <typename Mask>
-  Mask_vector<Mask>& mask_storage()
-  {
-    if constexpr(std::is_same<Mask, std::uint8_t>::value)
-      return m_masks8;
-    else if constexpr(std::is_same<Mask, std::uint16_t>::value)
-      return m_masks16;
-    else if constexpr(std::is_same<Mask, std::uint32_t>::value)
-      return m_masks32;
-    else
-      return m_masks64;
-  }
-
   // A perturbed line through (u + du, v + dv) can only cross a triangle if
   // umin <= u < umax and vmin <= v < vmax (the perturbation is positive).
   Line_block line_block(const internal::Lattice_triangle& t, int axis,
@@ -441,11 +457,17 @@ private:
     return b;
   }
 
-  template <typename ConcurrencyTag, typename Mask>
+  template <typename ConcurrencyTag>
   void run(const std::vector<internal::Lattice_triangle>& triangles, std::size_t max_memory_bytes,
            std::size_t reserved_bytes, const internal::Progress& progress)
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    for(int a = 0; a < 3; ++a)
+      if(n[a] >= max_points_per_axis)
+        throw Lattice_too_large_error("the lattice has " + std::to_string(n[a]) + " points along " +
+                                      std::string(1, char('x' + a)) + "; at most " +
+                                      std::to_string(max_points_per_axis - 1) +
+                                      " are supported: use a larger spacing");
     const std::size_t T = triangles.size();
     // The lattice coordinates, computed once by the one formula.
     std::array<std::vector<double>, 3> coordinates;
@@ -472,37 +494,38 @@ private:
           binned[axis] += b.v1 - b.v0;
         }
     }
-    check_memory(triangles.size(), candidates, binned, sizeof(Mask), max_memory_bytes, reserved_bytes);
+    check_memory(triangles.size(), candidates, binned, max_memory_bytes, reserved_bytes);
 
-    // Not initialized here: the x pass writes every entry, in parallel.
-    Mask_vector<Mask>& masks = mask_storage<Mask>();
-    masks.clear();
-    masks.resize(m_lattice.total_number_of_points());
+    // Written by the x pass, line by line, in parallel.
+    m_start_masks.assign(n[1] * n[2], 0);
 
     const double weights[4] = {0, 0.5, 0.75, 1.0};
     for(int axis = 0; axis < 3; ++axis)
     {
       const auto start = std::chrono::steady_clock::now();
-      process_axis<ConcurrencyTag, Mask>(axis, triangles, blocks[axis], coordinates, masks,
-                                         progress.part(weights[axis], weights[axis + 1]));
+      process_axis<ConcurrencyTag>(axis, triangles, blocks[axis], coordinates,
+                                   progress.part(weights[axis], weights[axis + 1]));
       std::vector<Line_block>().swap(blocks[axis]);
       m_seconds[axis] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   }
 
   void check_memory(std::size_t number_of_triangles, const std::array<std::size_t, 3>& candidates,
-                    const std::array<std::size_t, 3>& binned, std::size_t mask_bytes, std::size_t max_memory_bytes,
-                    std::size_t reserved_bytes)
+                    const std::array<std::size_t, 3>& binned, std::size_t max_memory_bytes, std::size_t reserved_bytes)
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
     // Doubles: the sum must not wrap around.
-    double bytes = double(m_lattice.total_number_of_points()) * double(mask_bytes) + double(reserved_bytes) +
+    double bytes = double(reserved_bytes) + 8.0 * double(n[1]) * double(n[2]) + // the start masks
                    double(number_of_triangles) * double(sizeof(internal::Lattice_triangle) + 3 * sizeof(Line_block));
     double largest_axis = 0;
     for(int axis = 0; axis < 3; ++axis)
     {
       const double lines = double(n[internal::line_u_axis(axis)]) * double(n[internal::line_v_axis(axis)]);
-      bytes += 8.0 * (lines + 1); // the line offsets stay
+      bytes += double(sizeof(Line_offset)) * (lines + 1); // the line offsets stay
+      // The offsets are 32-bit: an upper bound of the crossings must fit.
+      if(double(candidates[axis]) >= double(std::numeric_limits<Line_offset>::max()))
+        throw Lattice_too_large_error("the lattice would hold more than 2^32 crossings along " +
+                                      std::string(1, char('x' + axis)) + ": use a larger spacing");
       bytes += double(candidates[axis]) * double(sizeof(Crossing)); // at most that many crossings stay
       // Transient, one axis at a time: row buffers and bins.
       largest_axis = (std::max)(largest_axis, double(candidates[axis]) * double(sizeof(Row_crossing)) +
@@ -555,10 +578,10 @@ private:
     row.swap(sorted);
   }
 
-  template <typename ConcurrencyTag, typename Mask>
+  template <typename ConcurrencyTag>
   void process_axis(int axis, const std::vector<internal::Lattice_triangle>& triangles,
                     const std::vector<Line_block>& blocks, const std::array<std::vector<double>, 3>& coordinates,
-                    Mask_vector<Mask>& masks, const internal::Progress& progress)
+                    const internal::Progress& progress)
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
     const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
@@ -583,7 +606,6 @@ private:
     }
 
     std::vector<std::vector<Row_crossing>> rows(nv);
-    const std::array<std::size_t, 3> stride{{1, n[0], n[0] * n[1]}};
     internal::concurrent_for<ConcurrencyTag>(
         nv,
         [&](std::size_t r) {
@@ -613,23 +635,11 @@ private:
           if(axis == 0)
           {
             // Classification: the parity of the crossings before each point.
-            // The mask is constant between crossing indices, so each line is
-            // written once, run by run (the array is not initialized).
-            std::size_t i = 0;
-            for(std::size_t ju = 0; ju < nu; ++ju)
-            {
-              Mask* line = masks.data() + ju * stride[1] + r * stride[2];
-              Mask current = 0;
-              std::size_t written = 0;
-              for(; i < out.size() && out[i].u == ju; ++i)
-              {
-                std::fill(line + written, line + out[i].index, current);
-                written = out[i].index;
-                current ^= Mask(Mask(1) << out[i].mesh);
-              }
-              std::fill(line + written, line + na, current);
-            }
-            // Crossings before the first point only toggled the classification.
+            // The crossings before the first point give the line's start
+            // mask; the others stay and define the rest of the line.
+            for(const Row_crossing& c : out)
+              if(c.index == 0)
+                m_start_masks[c.u + nu * r] ^= std::uint64_t(1) << c.mesh;
             out.erase(std::remove_if(out.begin(), out.end(), [](const Row_crossing& c) { return c.index == 0; }),
                       out.end());
           }
@@ -646,7 +656,7 @@ private:
 
     // Gather the rows into one array, line by line (line = ju + nu * r: the
     // rows are consecutive blocks of lines, already sorted).
-    std::vector<std::size_t>& line_begin = m_line_begin[axis];
+    std::vector<Line_offset>& line_begin = m_line_begin[axis];
     line_begin.assign(nu * nv + 1, 0);
     std::vector<std::size_t> row_offset(nv + 1, 0);
     for(std::size_t r = 0; r < nv; ++r)
@@ -657,7 +667,11 @@ private:
       std::size_t out = row_offset[r];
       for(const Row_crossing& c : rows[r])
       {
-        crossings[out++] = Crossing{c.position, c.index, c.mesh, c.triangle};
+        Crossing& stored = crossings[out++];
+        stored.position = c.position;
+        stored.index = c.index;
+        stored.mesh = c.mesh;
+        stored.triangle = c.triangle;
         ++line_begin[c.u + nu * r + 1];
       }
       std::vector<Row_crossing>().swap(rows[r]);
@@ -669,11 +683,8 @@ private:
 
   Regular_lattice_3 m_lattice;
   std::size_t m_number_of_meshes = 0;
-  Mask_vector<std::uint8_t> m_masks8;
-  Mask_vector<std::uint16_t> m_masks16;
-  Mask_vector<std::uint32_t> m_masks32;
-  Mask_vector<std::uint64_t> m_masks64;
-  std::array<std::vector<std::size_t>, 3> m_line_begin;
+  std::vector<std::uint64_t> m_start_masks; // per x line
+  std::array<std::vector<Line_offset>, 3> m_line_begin;
   std::array<std::vector<Crossing>, 3> m_crossings;
   std::array<double, 3> m_seconds{{0, 0, 0}};
   std::size_t m_estimated_bytes = 0;

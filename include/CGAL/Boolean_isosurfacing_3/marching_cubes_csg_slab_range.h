@@ -177,9 +177,7 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   const std::size_t max_memory = choose_parameter(get_parameter(np, internal_np::max_memory_bytes),
                                                   Lattice_classifier_3::default_max_memory_bytes);
   typedef internal::Marching_cubes_csg_builder<ConcurrencyTag> Builder;
-  const std::size_t plane = sub.number_of_points(0) * sub.number_of_points(1);
-  const std::size_t reserved =
-      sub.total_number_of_points() * Builder::bytes_per_point() + plane * Builder::bytes_per_plane_point();
+  const std::size_t reserved = sub.number_of_points(1) * sub.number_of_points(2) * Builder::bytes_per_row();
   const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
       std::move(triangles), number_of_meshes, sub, max_memory, reserved, internal::Progress());
   internal::Marching_cubes_csg::Feature_settings plain;

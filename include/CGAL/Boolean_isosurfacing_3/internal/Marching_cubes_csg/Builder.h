@@ -16,7 +16,6 @@
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Csg_edge_point.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Collapse_short_edges.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Resolution_check.h>
@@ -38,6 +37,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -104,6 +105,15 @@ struct Csg_soup
 };
 
 // The phases after the classification: output states, vertices, cubes.
+//
+// The output states are stored sparsely, per x row of lattice points: the
+// state of its first point and the sorted list of the row's *vertex edges*,
+// coded 3 * i + axis: its x edge (i, i + 1), and the y edge to the next row
+// and the z edge to the next plane at point i, whose ends have different
+// states.  These lists hold one entry per output vertex, in vertex order,
+// so memory and work grow with the surface, not with the lattice: a row
+// with an empty list is uniform and equal to its neighbours, and is skipped
+// in O(1).  (The x entries alone give the states along the row.)
 template <typename ConcurrencyTag>
 class Marching_cubes_csg_builder
 {
@@ -120,57 +130,39 @@ public:
       m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents)
   {}
 
-  // Bytes per lattice point and per xy-plane that the builder allocates on
-  // top of the classifier.
-  static std::size_t bytes_per_point() { return 1; }
-  static std::size_t bytes_per_plane_point() { return 2 * 3 * sizeof(std::uint32_t) * concurrency<ConcurrencyTag>() + 1; }
+  // Bytes per x row of lattice points and per output vertex that the
+  // builder allocates on top of the classifier (for its memory estimate).
+  static std::size_t bytes_per_row() { return sizeof(std::uint32_t) + 1; }
+  static std::size_t bytes_per_vertex() { return 2 * sizeof(std::uint32_t); }
 
+  // The vertex edge lists of every row; returns the number of lattice
+  // boundary points inside the result.
   std::size_t compute_states(const Progress& progress)
   {
-    const std::size_t nx = m_n[0], ny = m_n[1];
-    m_state.clear();
-    m_state.resize(m_lattice.total_number_of_points()); // written below, in parallel
-    m_row_kind.assign(ny * m_n[2], MIXED_ROW);
-    m_classifier.visit_masks([&](const auto* masks) {
-      concurrent_for<ConcurrencyTag>(
-          m_n[2],
-          [&](std::size_t k) {
-            for(std::size_t j = 0; j < ny; ++j)
-            {
-              const std::size_t first = m_lattice.linear_index(0, j, k), last = first + nx;
-              std::uint8_t* row = m_state.data() + first;
-              if(m_classifier.crossings_on_line(0, j + ny * k).empty())
-              {
-                // No crossing on the x line: the masks, hence the states, are constant.
-                const std::uint8_t s = m_inside(std::uint64_t(masks[first])) ? 1 : 0;
-                std::fill(row, row + nx, s);
-                m_row_kind[j + ny * k] = s;
-                continue;
-              }
-              unsigned any = 0, all = 1;
-              for(std::size_t idx = first; idx < last; ++idx)
-              {
-                const unsigned s = m_inside(std::uint64_t(masks[idx])) ? 1u : 0u;
-                m_state[idx] = std::uint8_t(s);
-                any |= s;
-                all &= s;
-              }
-              m_row_kind[j + ny * k] = any == all ? std::uint8_t(all) : MIXED_ROW;
-            }
-          },
-          progress);
-    });
-    // Points on the lattice boundary: whole rows on the boundary planes,
-    // the two ends of the other rows.
+    const std::size_t ny = m_n[1], nz = m_n[2];
+    // The x changes of every row first: the y and z edges compare two rows.
+    std::vector<Plane_changes> changes(nz);
+    concurrent_for<ConcurrencyTag>(
+        nz, [&](std::size_t k) { x_changes_of_plane(k, changes[k]); }, progress.part(0, 0.4));
+    m_planes.assign(nz, Plane_rows());
+    concurrent_for<ConcurrencyTag>(
+        nz,
+        [&](std::size_t k) { vertex_edges_of_plane(k, changes[k], k + 1 < nz ? &changes[k + 1] : nullptr, m_planes[k]); },
+        progress.part(0.4, 1));
+    m_vertex_offset.assign(nz + 1, 0);
+    for(std::size_t k = 0; k < nz; ++k)
+      m_vertex_offset[k + 1] = m_vertex_offset[k] + m_planes[k].codes.size();
+    // Points on the lattice boundary: whole rows on the boundary planes, the
+    // two ends of the other rows.
     std::size_t boundary_inside = 0;
-    for(std::size_t k = 0; k < m_n[2]; ++k)
-      for(std::size_t j = 0; j < m_n[1]; ++j)
+    for(std::size_t k = 0; k < nz; ++k)
+      for(std::size_t j = 0; j < ny; ++j)
       {
-        const std::size_t row = m_lattice.linear_index(0, j, k);
-        if(k == 0 || j == 0 || k + 1 == m_n[2] || j + 1 == m_n[1])
-          boundary_inside += std::size_t(std::count(m_state.begin() + row, m_state.begin() + row + m_n[0], 1));
+        const Row row = row_of(k, j);
+        if(k == 0 || j == 0 || k + 1 == nz || j + 1 == ny)
+          boundary_inside += row.inside_points(m_n[0]);
         else
-          boundary_inside += m_state[row] + (m_n[0] > 1 ? m_state[row + m_n[0] - 1] : 0);
+          boundary_inside += std::size_t(row.first) + (m_n[0] > 1 ? std::size_t(row.last_state()) : 0);
       }
     return boundary_inside;
   }
@@ -181,29 +173,13 @@ public:
   void compute_vertices(std::vector<std::array<double, 3>>& points, const Progress& progress)
   {
     const std::size_t nz = m_n[2];
-    m_vertex_offset.assign(nz + 1, 0);
-    concurrent_for<ConcurrencyTag>(nz, [&](std::size_t k) {
-      std::size_t count = 0;
-      for_each_vertex_edge(k, [&](std::size_t, std::size_t, int, std::size_t) { ++count; });
-      m_vertex_offset[k + 1] = count;
-    });
-    for(std::size_t k = 0; k < nz; ++k)
-      m_vertex_offset[k + 1] += m_vertex_offset[k];
     if(m_vertex_offset[nz] >= (std::size_t(1) << 32) && sizeof(std::size_t) < 8)
       throw Lattice_too_large_error("too many output vertices for this platform");
     points.resize(m_vertex_offset[nz]);
     if(m_features.enabled)
       m_normals.resize(points.size());
     concurrent_for<ConcurrencyTag>(
-        nz,
-        [&](std::size_t k) {
-          std::size_t id = m_vertex_offset[k];
-          for_each_vertex_edge(k, [&](std::size_t i, std::size_t j, int axis, std::size_t idx) {
-            points[id] = vertex_position(i, j, k, axis, idx, m_features.enabled ? &m_normals[id] : nullptr);
-            ++id;
-          });
-        },
-        progress);
+        nz, [&](std::size_t k) { vertices_of_plane(k, points); }, progress);
   }
 
   // With sharp features, `points` (the edge vertices) gets the feature
@@ -217,11 +193,12 @@ public:
     if(m_n[0] < 2 || m_n[1] < 2 || m_n[2] < 2)
       return;
     const std::size_t layers = m_n[2] - 1;
-    // The chunks only change who computes what: the output is the
-    // concatenation of the layers in order, whatever the chunking.
-    const std::size_t chunks = (std::min)(layers, is_parallel_tag<ConcurrencyTag>() ? 8 * concurrency<ConcurrencyTag>() : 1);
     if(m_features.enabled)
     {
+      // The chunks only change who computes what: the output is the
+      // concatenation of the layers in order, whatever the chunking.
+      const std::size_t chunks =
+          (std::min)(layers, is_parallel_tag<ConcurrencyTag>() ? 8 * concurrency<ConcurrencyTag>() : 1);
       std::vector<Marching_cubes_csg::Feature_chunk> buffers(chunks);
       concurrent_for<ConcurrencyTag>(
           chunks,
@@ -251,68 +228,279 @@ public:
       std::vector<Vector_3d>().swap(m_normals);
       return;
     }
-    std::vector<std::vector<std::array<std::size_t, 3>>> buffers(chunks);
+    // Plain Marching Cubes: a count pass, then every layer writes its
+    // triangles at its offset (Flying Edges' scheme: no buffers to merge,
+    // and the output does not depend on the concurrency).
+    const Marching_cubes_table& table = Marching_cubes_table::instance();
+    std::vector<std::size_t> offset(layers + 1, 0);
     concurrent_for<ConcurrencyTag>(
-        chunks,
-        [&](std::size_t c) { triangulate_layers(layers * c / chunks, layers * (c + 1) / chunks, buffers[c]); },
-        progress);
-    std::size_t total = 0;
-    for(const auto& b : buffers)
-      total += b.size();
-    triangles.reserve(total);
-    for(auto& b : buffers)
-    {
-      triangles.insert(triangles.end(), b.begin(), b.end());
-      std::vector<std::array<std::size_t, 3>>().swap(b);
-    }
+        layers,
+        [&](std::size_t k) {
+          std::size_t count = 0;
+          for_each_crossed_cube(k, k + 1, [&](std::size_t, std::size_t, std::size_t, unsigned code, const auto&) {
+            count += table.triangles(code).size();
+          });
+          offset[k + 1] = count;
+        },
+        progress.part(0, 0.3));
+    for(std::size_t k = 0; k < layers; ++k)
+      offset[k + 1] += offset[k];
+    triangles.resize(offset[layers]);
+    concurrent_for<ConcurrencyTag>(
+        layers,
+        [&](std::size_t k) {
+          std::array<std::size_t, 3>* out = triangles.data() + offset[k];
+          for_each_crossed_cube(k, k + 1, [&](std::size_t, std::size_t, std::size_t, unsigned code,
+                                              const auto& vertex_of) {
+            for(const Marching_cubes_table::Triangle& t : table.triangles(code))
+              *out++ = {{vertex_of(t[0]), vertex_of(t[1]), vertex_of(t[2])}};
+          });
+        },
+        progress.part(0.3, 1));
   }
 
 private:
-  // Calls f(i, j, axis, linear index of (i, j, k)) for the edges of plane k
-  // whose ends have different states, in vertex order.
-  // Rows of lattice points (along x) whose states are all 0 or all 1 are
-  // skipped wholesale: away from the surface a pass costs O(1) per row.
-  static constexpr std::uint8_t MIXED_ROW = 2;
-
-  // Whether all the rows given have the same constant state (no vertex
-  // between them, no surface in the cubes they span).
-  bool uniform_rows(std::uint8_t a, std::uint8_t b) const { return a == b && a != MIXED_ROW; }
-
-  template <typename F>
-  void for_each_vertex_edge(std::size_t k, const F& f) const
+  // The x changes of the rows of one plane: row j's are
+  // changes[begin[j] .. begin[j + 1]), the indices i whose x edge (i, i + 1)
+  // joins two different states.
+  struct Plane_changes
   {
-    const std::size_t nx = m_n[0], ny = m_n[1], nz = m_n[2];
-    const std::size_t plane = nx * ny;
-    const bool has_z = k + 1 < nz;
-    for(std::size_t j = 0; j < ny; ++j)
+    std::vector<std::uint32_t> begin;
+    std::vector<std::uint32_t> changes;
+    std::vector<std::uint8_t> first;
+  };
+
+  // The vertex edges of the rows of one plane: row j's are
+  // codes[begin[j] .. begin[j + 1]), increasing 3 * i + axis.
+  struct Plane_rows
+  {
+    std::vector<std::uint32_t> begin;
+    std::vector<std::uint32_t> codes;
+    std::vector<std::uint8_t> first;
+  };
+
+  // One row: its first state and its vertex edges.
+  struct Row
+  {
+    const std::uint32_t* begin = nullptr;
+    const std::uint32_t* end = nullptr;
+    bool first = false;
+
+    bool empty() const { return begin == end; }
+    // The state of the last point: one flip per x change.
+    bool last_state() const
     {
-      const bool has_y = j + 1 < ny;
-      const std::uint8_t kind = m_row_kind[j + ny * k];
-      if(kind != MIXED_ROW && (!has_y || uniform_rows(kind, m_row_kind[j + 1 + ny * k])) &&
-         (!has_z || uniform_rows(kind, m_row_kind[j + ny * (k + 1)])))
-        continue;
-      std::size_t idx = m_lattice.linear_index(0, j, k);
-      for(std::size_t i = 0; i < nx; ++i, ++idx)
+      bool s = first;
+      for(const std::uint32_t* c = begin; c != end; ++c)
+        s ^= (*c % 3 == 0);
+      return s;
+    }
+    std::size_t inside_points(std::size_t nx) const
+    {
+      std::size_t inside = 0, from = 0;
+      bool s = first;
+      for(const std::uint32_t* c = begin; c != end; ++c)
+        if(*c % 3 == 0)
+        {
+          const std::size_t i = *c / 3;
+          if(s)
+            inside += i + 1 - from;
+          s = !s;
+          from = i + 1;
+        }
+      return inside + (s ? nx - from : 0);
+    }
+  };
+
+  Row row_of(std::size_t k, std::size_t j) const
+  {
+    const Plane_rows& p = m_planes[k];
+    return Row{p.codes.data() + p.begin[j], p.codes.data() + p.begin[j + 1], p.first[j] != 0};
+  }
+
+  // The states along x line `line` as its first state and x changes.
+  void x_changes_of_line(std::size_t line, std::vector<std::uint32_t>& changes, std::uint8_t& first) const
+  {
+    std::uint64_t mask = m_classifier.start_mask(line);
+    bool state = m_inside(mask);
+    first = std::uint8_t(state);
+    const Lattice_classifier_3::Crossing_range crossings = m_classifier.crossings_on_line(0, line);
+    for(const Lattice_crossing* c = crossings.begin(); c != crossings.end();)
+    {
+      const std::uint32_t index = c->index; // on the edge (index - 1, index)
+      for(; c != crossings.end() && c->index == index; ++c)
+        mask ^= std::uint64_t(1) << c->mesh;
+      const bool now = m_inside(mask);
+      if(now != state)
       {
-        const std::uint8_t s = m_state[idx];
-        if(i + 1 < nx && s != m_state[idx + 1])
-          f(i, j, 0, idx);
-        if(has_y && s != m_state[idx + nx])
-          f(i, j, 1, idx);
-        if(has_z && s != m_state[idx + plane])
-          f(i, j, 2, idx);
+        changes.push_back(index - 1);
+        state = now;
       }
     }
   }
 
-  // The vertex of a lattice edge, and (if `normal` is not null) the outward
-  // unit normal of the input triangle it lies on.
-  std::array<double, 3> vertex_position(std::size_t i, std::size_t j, std::size_t k, int axis, std::size_t idx,
-                                        Vector_3d* normal) const
+  void x_changes_of_plane(std::size_t k, Plane_changes& plane) const
   {
-    const std::size_t stride = axis == 0 ? 1 : (axis == 1 ? m_n[0] : m_n[0] * m_n[1]);
-    const bool from_low = m_state[idx] != 0;
-    const std::uint64_t mask = m_classifier.mask(from_low ? idx : idx + stride);
+    const std::size_t ny = m_n[1];
+    plane.begin.assign(ny + 1, 0);
+    plane.first.assign(ny, 0);
+    for(std::size_t j = 0; j < ny; ++j)
+    {
+      x_changes_of_line(j + ny * k, plane.changes, plane.first[j]);
+      plane.begin[j + 1] = std::uint32_t(plane.changes.size());
+    }
+  }
+
+  // Appends the indices i < nx where the states of two rows differ (each
+  // row given by its first state and x changes), increasing.
+  static void differences(bool a, const std::uint32_t* ca, const std::uint32_t* ea, bool b, const std::uint32_t* cb,
+                          const std::uint32_t* eb, std::size_t nx, std::vector<std::uint32_t>& out)
+  {
+    std::size_t i = 0;
+    while(i < nx)
+    {
+      // Both states are constant on [i, next].
+      std::size_t next = nx - 1;
+      if(ca != ea)
+        next = (std::min)(next, std::size_t(*ca));
+      if(cb != eb)
+        next = (std::min)(next, std::size_t(*cb));
+      if(a != b)
+        for(std::size_t x = i; x <= next; ++x)
+          out.push_back(std::uint32_t(x));
+      if(ca != ea && *ca == next)
+      {
+        a = !a;
+        ++ca;
+      }
+      if(cb != eb && *cb == next)
+      {
+        b = !b;
+        ++cb;
+      }
+      i = next + 1;
+    }
+  }
+
+  // `above` is the next plane's changes (null for the last plane).
+  void vertex_edges_of_plane(std::size_t k, const Plane_changes& here, const Plane_changes* above,
+                             Plane_rows& plane) const
+  {
+    const std::size_t nx = m_n[0], ny = m_n[1];
+    plane.begin.assign(ny + 1, 0);
+    plane.first = here.first;
+    std::vector<std::uint32_t> y, z;
+    for(std::size_t j = 0; j < ny; ++j)
+    {
+      const std::uint32_t* x_first = here.changes.data() + here.begin[j];
+      const std::uint32_t* x_last = here.changes.data() + here.begin[j + 1];
+      y.clear();
+      z.clear();
+      if(j + 1 < ny)
+        differences(here.first[j] != 0, x_first, x_last, here.first[j + 1] != 0,
+                    here.changes.data() + here.begin[j + 1], here.changes.data() + here.begin[j + 2], nx, y);
+      if(above != nullptr)
+        differences(here.first[j] != 0, x_first, x_last, above->first[j] != 0,
+                    above->changes.data() + above->begin[j], above->changes.data() + above->begin[j + 1], nx, z);
+      // Merge the three increasing lists into codes 3 * i + axis.
+      const std::uint32_t* yc = y.data();
+      const std::uint32_t* zc = z.data();
+      const std::uint32_t* x = x_first;
+      const std::uint32_t* y_end = y.data() + y.size();
+      const std::uint32_t* z_end = z.data() + z.size();
+      while(x != x_last || yc != y_end || zc != z_end)
+      {
+        std::uint32_t i = std::numeric_limits<std::uint32_t>::max();
+        if(x != x_last) i = (std::min)(i, *x);
+        if(yc != y_end) i = (std::min)(i, *yc);
+        if(zc != z_end) i = (std::min)(i, *zc);
+        if(x != x_last && *x == i) { plane.codes.push_back(3 * i); ++x; }
+        if(yc != y_end && *yc == i) { plane.codes.push_back(3 * i + 1); ++yc; }
+        if(zc != z_end && *zc == i) { plane.codes.push_back(3 * i + 2); ++zc; }
+      }
+      if(plane.codes.size() >= std::numeric_limits<std::uint32_t>::max())
+        throw Lattice_too_large_error("more than 2^32 output vertices in one lattice plane");
+      plane.begin[j + 1] = std::uint32_t(plane.codes.size());
+    }
+    plane.codes.shrink_to_fit();
+  }
+
+  // The mask along an x line, walked with increasing i.
+  class Line_mask
+  {
+  public:
+    Line_mask(const Lattice_classifier_3& classifier, std::size_t line)
+      : m_mask(classifier.start_mask(line))
+    {
+      const Lattice_classifier_3::Crossing_range c = classifier.crossings_on_line(0, line);
+      m_next = c.begin();
+      m_end = c.end();
+    }
+    // The mask of point i; i never decreases from call to call.
+    std::uint64_t at(std::size_t i)
+    {
+      for(; m_next != m_end && m_next->index <= i; ++m_next)
+        m_mask ^= std::uint64_t(1) << m_next->mesh;
+      return m_mask;
+    }
+
+  private:
+    std::uint64_t m_mask;
+    const Lattice_crossing* m_next;
+    const Lattice_crossing* m_end;
+  };
+
+  void vertices_of_plane(std::size_t k, std::vector<std::array<double, 3>>& points)
+  {
+    const std::size_t ny = m_n[1];
+    std::size_t id = m_vertex_offset[k];
+    for(std::size_t j = 0; j < ny; ++j)
+    {
+      const Row row = row_of(k, j);
+      if(row.empty())
+        continue;
+      Line_mask here(m_classifier, j + ny * k);
+      // The masks of the next row and of the row above, made when needed.
+      std::optional<Line_mask> next_row, row_above;
+      for(const std::uint32_t* c = row.begin; c != row.end; ++c, ++id)
+      {
+        const std::size_t i = *c / 3;
+        const int axis = int(*c % 3);
+        const std::uint64_t low_mask = here.at(i);
+        const bool from_low = m_inside(low_mask);
+        std::uint64_t inside_mask = low_mask;
+        if(!from_low)
+        {
+          if(axis == 0)
+          {
+            inside_mask = low_mask;
+            for(const Lattice_crossing& x : m_classifier.crossings_on_edge(0, i, j, k))
+              inside_mask ^= std::uint64_t(1) << x.mesh;
+          }
+          else if(axis == 1)
+          {
+            if(!next_row)
+              next_row.emplace(m_classifier, j + 1 + ny * k);
+            inside_mask = next_row->at(i);
+          }
+          else
+          {
+            if(!row_above)
+              row_above.emplace(m_classifier, j + ny * (k + 1));
+            inside_mask = row_above->at(i);
+          }
+        }
+        points[id] = vertex_position(i, j, k, axis, from_low, inside_mask, m_features.enabled ? &m_normals[id] : nullptr);
+      }
+    }
+  }
+
+  // The vertex of a lattice edge whose inside end has mask `mask`, and (if
+  // `normal` is not null) the outward unit normal of the input triangle it
+  // lies on.
+  std::array<double, 3> vertex_position(std::size_t i, std::size_t j, std::size_t k, int axis, bool from_low,
+                                        std::uint64_t mask, Vector_3d* normal) const
+  {
     const Lattice_classifier_3::Crossing_range crossings = m_classifier.crossings_on_edge(axis, i, j, k);
     const std::size_t c = csg_edge_crossing(crossings.begin(), crossings.size(), from_low, mask, m_inside);
     if(c == crossings.size())
@@ -325,81 +513,104 @@ private:
     return p;
   }
 
-  // Local vertex number, in plane k, of each vertex edge: entry 3 * (i + nx * j) + axis.
-  void number_plane_vertices(std::size_t k, std::vector<std::uint32_t>& ids) const
-  {
-    std::uint32_t next = 0;
-    const std::size_t nx = m_n[0];
-    for_each_vertex_edge(k, [&](std::size_t i, std::size_t j, int axis, std::size_t) {
-      ids[3 * (i + nx * j) + std::size_t(axis)] = next++;
-    });
-  }
-
   // The walk both triangulations share: calls f(i, j, k, code, vertex_of)
   // for every cube of the layers [first, last) whose corners do not all have
   // the same state, layer by layer, then by cube (i fastest).  `code` has
   // bit c set iff corner c is inside; `vertex_of(e)` is the output vertex on
-  // cube edge e.  Rows of cubes whose four bounding point rows are uniform
-  // and equal are skipped wholesale.
+  // cube edge e.  A row of cubes whose bounding point rows have no vertex
+  // edge is skipped in O(1); in the others only the runs between x changes
+  // are looked at, so the work grows with the surface.
   template <typename F>
   void for_each_crossed_cube(std::size_t first, std::size_t last, const F& f) const
   {
-    if(first >= last)
-      return;
     const std::size_t nx = m_n[0], ny = m_n[1];
-    const std::size_t plane = nx * ny;
-    // Local vertex numbers of the planes k and k + 1 (see number_plane_vertices()).
-    std::vector<std::uint32_t> low(3 * plane), high(3 * plane);
-    number_plane_vertices(first, low);
-    // Corner c of the cube at idx is at idx + corner_offset[c].
-    std::array<std::size_t, 8> corner_offset;
-    for(int c = 0; c < 8; ++c)
-      corner_offset[c] = std::size_t(c & 1) + nx * std::size_t((c >> 1) & 1) + plane * std::size_t((c >> 2) & 1);
     for(std::size_t k = first; k < last; ++k)
-    {
-      number_plane_vertices(k + 1, high);
-      const std::array<const std::uint32_t*, 2> ids{{low.data(), high.data()}};
-      const std::array<std::size_t, 2> offset{{m_vertex_offset[k], m_vertex_offset[k + 1]}};
       for(std::size_t j = 0; j + 1 < ny; ++j)
       {
-        const std::uint8_t kind = m_row_kind[j + ny * k];
-        if(uniform_rows(kind, m_row_kind[j + 1 + ny * k]) && uniform_rows(kind, m_row_kind[j + ny * (k + 1)]) &&
-           uniform_rows(kind, m_row_kind[j + 1 + ny * (k + 1)]))
+        // The point rows of the cube row: corner c is on row (c >> 1) & 3
+        // (its y and z offsets), at x offset c & 1.
+        const std::array<Row, 4> rows{{row_of(k, j), row_of(k, j + 1), row_of(k + 1, j), row_of(k + 1, j + 1)}};
+        // Empty lists of the first three rows: no x change, and the same
+        // state as the next row and the row above: all four rows uniform.
+        if(rows[0].empty() && rows[1].empty() && rows[2].empty())
           continue;
-        std::size_t idx = m_lattice.linear_index(0, j, k);
-        for(std::size_t i = 0; i + 1 < nx; ++i, ++idx)
+        const std::array<std::size_t, 4> row_offset{{m_vertex_offset[k] + std::size_t(rows[0].begin - m_planes[k].codes.data()),
+                                                     m_vertex_offset[k] + std::size_t(rows[1].begin - m_planes[k].codes.data()),
+                                                     m_vertex_offset[k + 1] + std::size_t(rows[2].begin - m_planes[k + 1].codes.data()),
+                                                     m_vertex_offset[k + 1] + std::size_t(rows[3].begin - m_planes[k + 1].codes.data())}};
+        // Per row: the next x change (its index along x, or none), the
+        // current state, and the cursor of vertex_of().
+        std::array<const std::uint32_t*, 4> x_next, cursor;
+        std::array<bool, 4> state;
+        auto next_x_change = [&](int r, const std::uint32_t* c) {
+          while(c != rows[r].end && *c % 3 != 0)
+            ++c;
+          return c;
+        };
+        for(int r = 0; r < 4; ++r)
         {
+          x_next[r] = next_x_change(r, rows[r].begin);
+          cursor[r] = rows[r].begin;
+          state[r] = rows[r].first;
+        }
+        std::size_t cube = 0; // the vertices of this cube: vertex_of reads it
+        const auto vertex_of = [&](int e) {
+          // The default face rule never needs a polygon centre vertex.
+          CGAL_assertion(!Marching_cubes_table::is_centre_vertex(unsigned(e)));
+          const std::array<int, 3> o = cube_edge_origin_offset(e);
+          const int r = o[1] + 2 * o[2];
+          const std::uint32_t code = std::uint32_t(3 * (cube + std::size_t(o[0])) + std::size_t(cube_edge_axis(e)));
+          // The cursor stays at the first code of this cube (monotone over
+          // the cubes of the row); this edge's code is a few entries on.
+          const std::uint32_t* c = cursor[r];
+          while(*c < 3 * cube)
+            ++c;
+          cursor[r] = c;
+          while(*c < code)
+            ++c;
+          CGAL_assertion(c != rows[r].end && *c == code);
+          return row_offset[r] + std::size_t(c - rows[r].begin);
+        };
+        auto code_of = [](const std::array<bool, 4>& low, const std::array<bool, 4>& high) {
           unsigned code = 0;
           for(int c = 0; c < 8; ++c)
-            code |= unsigned(m_state[idx + corner_offset[c]]) << c;
-          if(code == 0 || code == 255)
-            continue;
-          const auto vertex_of = [&](int e) {
-            // The default face rule never needs a polygon centre vertex.
-            CGAL_assertion(!Marching_cubes_table::is_centre_vertex(unsigned(e)));
-            const std::array<int, 3> o = cube_edge_origin_offset(e);
-            const std::size_t entry =
-                3 * ((i + std::size_t(o[0])) + nx * (j + std::size_t(o[1]))) + std::size_t(cube_edge_axis(e));
-            return std::size_t(offset[o[2]] + ids[o[2]][entry]);
-          };
-          f(i, j, k, code, vertex_of);
+            code |= unsigned((c & 1) ? high[(c >> 1) & 3] : low[(c >> 1) & 3]) << c;
+          return code;
+        };
+        std::size_t i = 0;
+        while(i + 1 < nx)
+        {
+          // States are constant on the points i .. e: cubes i .. e - 1 have
+          // their corners' states; cube e joins them to the next ones.
+          std::size_t e = nx - 1;
+          for(int r = 0; r < 4; ++r)
+            if(x_next[r] != rows[r].end)
+              e = (std::min)(e, std::size_t(*x_next[r] / 3));
+          if(!(state[0] == state[1] && state[0] == state[2] && state[0] == state[3]))
+          {
+            const unsigned code = code_of(state, state);
+            for(cube = i; cube < e; ++cube)
+              f(cube, j, k, code, vertex_of);
+          }
+          if(e + 1 >= nx)
+            break;
+          std::array<bool, 4> after = state;
+          for(int r = 0; r < 4; ++r)
+            if(x_next[r] != rows[r].end && *x_next[r] / 3 == e)
+            {
+              after[r] = !after[r];
+              x_next[r] = next_x_change(r, x_next[r] + 1);
+            }
+          cube = e;
+          f(cube, j, k, code_of(state, after), vertex_of);
+          state = after;
+          i = e + 1;
         }
       }
-      std::swap(low, high);
-    }
   }
 
-  void triangulate_layers(std::size_t first, std::size_t last, std::vector<std::array<std::size_t, 3>>& out) const
-  {
-    const Marching_cubes_table& table = Marching_cubes_table::instance();
-    for_each_crossed_cube(first, last, [&](std::size_t, std::size_t, std::size_t, unsigned code, const auto& vertex_of) {
-      for(const Marching_cubes_table::Triangle& t : table.triangles(code))
-        out.push_back({{vertex_of(t[0]), vertex_of(t[1]), vertex_of(t[2])}});
-    });
-  }
-
-  // As triangulate_layers(), with the polygons whose normals disagree fanned
-  // around their feature vertex.
+  // The cubes of layers [first, last), the polygons whose normals disagree
+  // fanned around their feature vertex.
   void triangulate_feature_layers(std::size_t first, std::size_t last, const std::vector<Vector_3d>& points,
                                   Marching_cubes_csg::Feature_chunk& out) const
   {
@@ -418,8 +629,7 @@ private:
   const Regular_lattice_3& m_lattice;
   Expression_evaluator m_inside;
   std::array<std::size_t, 3> m_n;
-  std::vector<std::uint8_t, Default_init_allocator<std::uint8_t>> m_state;
-  std::vector<std::uint8_t> m_row_kind; // per x row (j + ny * k): 0, 1 or MIXED_ROW
+  std::vector<Plane_rows> m_planes;
   std::vector<std::size_t> m_vertex_offset;
   Feature_settings m_features;
   const std::vector<Triangle_tangent>& m_tangents;
@@ -513,13 +723,12 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
       features.enabled ? Marching_cubes_csg::triangle_tangents(triangles)
                        : std::vector<Marching_cubes_csg::Triangle_tangent>();
   typedef Marching_cubes_csg_builder<ConcurrencyTag> Builder;
-  const std::size_t plane = lattice.number_of_points(0) * lattice.number_of_points(1);
-  const std::size_t reserved = lattice.total_number_of_points() * Builder::bytes_per_point() +
-                               plane * Builder::bytes_per_plane_point();
+  const std::size_t reserved = lattice.number_of_points(1) * lattice.number_of_points(2) * Builder::bytes_per_row();
   const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
       std::move(triangles), number_of_meshes, lattice, max_memory, reserved, progress.part(0, 0.6));
 #if defined(CGAL_BOOLEAN_ISOSURFACING_3_CHECK_CONSISTENCY) || !defined(NDEBUG)
-  if(classifier.number_of_inconsistent_edges() != 0)
+  // O(points): only where the lattice is small enough to walk point by point.
+  if(lattice.total_number_of_points() <= (std::size_t(1) << 27) && classifier.number_of_inconsistent_edges() != 0)
     throw std::logic_error("marching_cubes_csg: crossings inconsistent with the classification (this is a bug)");
 #endif
   Builder builder(classifier, expression, features, tangents);
