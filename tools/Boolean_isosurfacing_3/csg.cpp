@@ -22,19 +22,18 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/boolean_isosurface_files.h>
-#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <array>
 #include <cerrno>
@@ -60,6 +59,9 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef Epick::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
+// Inputs and output stay in flat arrays from file to file: no halfedge
+// structure is built on the way (it was most of the process's time).
+typedef BI::Triangle_soup_3 Soup;
 
 using biso_tools::Progress_bar;
 
@@ -77,26 +79,45 @@ BI::Boolean_expression and_with_new_variable(const BI::Boolean_expression& expre
 }
 
 // The closed, outward triangulated box [lo, hi].
-Mesh box_mesh(const std::array<double, 3>& lo, const std::array<double, 3>& hi)
+Soup box_soup(const std::array<double, 3>& lo, const std::array<double, 3>& hi)
 {
-  Mesh m;
-  std::array<Mesh::Vertex_index, 8> v;
+  Soup box;
   // Corner k at (k & 1, (k >> 1) & 1, (k >> 2) & 1).
   for(int k = 0; k < 8; ++k)
-    v[k] = m.add_vertex(Point((k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]));
-  const int faces[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                            {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  for(const auto& f : faces)
-    m.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  return m;
+    box.points.push_back({{(k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]}});
+  box.triangles = {{{0, 2, 3}}, {{0, 3, 1}}, {{4, 5, 7}}, {{4, 7, 6}}, {{0, 1, 5}}, {{0, 5, 4}},
+                   {{2, 6, 7}}, {{2, 7, 3}}, {{0, 4, 6}}, {{0, 6, 2}}, {{1, 3, 7}}, {{1, 7, 5}}};
+  return box;
+}
+
+// A generated mesh (the demo's inputs) as a soup.
+Soup soup_of(const Mesh& mesh)
+{
+  Soup soup;
+  std::vector<std::uint32_t> index(mesh.number_of_vertices());
+  for(const Mesh::Vertex_index v : mesh.vertices())
+  {
+    index[v] = std::uint32_t(soup.points.size());
+    const Point& p = mesh.point(v);
+    soup.points.push_back({{p.x(), p.y(), p.z()}});
+  }
+  for(const Mesh::Face_index f : mesh.faces())
+  {
+    Soup::Triangle t;
+    int i = 0;
+    for(const Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
+      t[i++] = index[v];
+    soup.triangles.push_back(t);
+  }
+  return soup;
 }
 
 struct Result
 {
-  Mesh mesh;
+  Soup soup;
   BI::Marching_cubes_csg_statistics statistics;
   BI::Regular_lattice_3 lattice;
-  BI::Crease_network creases; // vertex indices of `mesh`
+  BI::Crease_network creases; // vertex indices of `soup`
 };
 
 std::size_t max_memory_bytes(const Options& options)
@@ -124,10 +145,12 @@ std::string lattice_message(const Options& options, const BI::Lattice_too_large_
   return options.lattice_flag.empty() ? message : options.lattice_flag + ": " + message;
 }
 
-CGAL::Bbox_3 bounding_box(const std::vector<Mesh>& meshes)
+CGAL::Bbox_3 bounding_box(const std::vector<Soup>& soups)
 {
   CGAL::Bbox_3 box;
-  for(const Mesh& m : meshes) box += PMP::bbox(m);
+  for(const Soup& s : soups)
+    for(const auto& p : s.points)
+      box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
   return box;
 }
 
@@ -173,45 +196,32 @@ BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::v
 
 // The lattice encloses `box` (the inputs' bounding box) with `margin_cells`;
 // the library's default lattice keeps the box's faces off the lattice planes.
-Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& expression, const Options& options,
+Result run_csg(const std::vector<Soup>& meshes, const BI::Boolean_expression& expression, const Options& options,
                const CGAL::Bbox_3& box, std::size_t margin_cells = 1)
 {
-  const BI::Regular_lattice_3 lattice =
-      options.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells, margin_cells)
-                        : BI::Regular_lattice_3::enclosing(box, options.spacing, margin_cells);
-  Mesh output;
-  auto crease = output.add_property_map<Mesh::Edge_index, bool>("e:csg_crease", false).first;
-  auto corner = output.add_property_map<Mesh::Vertex_index, bool>("v:csg_corner", false).first;
+  Result r{Soup(), BI::Marching_cubes_csg_statistics(),
+           options.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells, margin_cells)
+                             : BI::Regular_lattice_3::enclosing(box, options.spacing, margin_cells),
+           BI::Crease_network()};
   const Progress_bar progress(options.quiet);
-  BI::Marching_cubes_csg_statistics statistics;
-  const auto np =
-      BI::parameters::sharp_features(
-          options.features,
-          BI::parameters::feature_angle(
-              options.feature_angle,
-              BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::progress(progress))))
-          .edge_is_constrained_map(crease)
-          .vertex_is_constrained_map(corner);
+  BI::Marching_cubes_csg_features features;
+  const auto np = BI::parameters::sharp_features(
+      options.features,
+      BI::parameters::feature_angle(
+          options.feature_angle,
+          BI::parameters::max_memory_bytes(
+              max_memory_bytes(options),
+              BI::parameters::sharp_feature_output(&features, BI::parameters::progress(progress)))));
 #ifdef CGAL_LINKED_WITH_TBB
   if(options.parallel)
-    statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(meshes, expression, lattice, output, np);
+    r.statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(r.lattice, meshes, expression, r.soup.points,
+                                                              r.soup.triangles, np);
   else
 #endif
-    statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(meshes, expression, lattice, output, np);
-  // A fresh Surface_mesh: vertex i is soup point i.
-  std::vector<std::array<std::size_t, 2>> edges;
-  std::vector<std::size_t> corners;
-  for(const Mesh::Edge_index e : output.edges())
-    if(crease[e])
-      edges.push_back({{std::size_t(output.vertex(e, 0)), std::size_t(output.vertex(e, 1))}});
-  for(const Mesh::Vertex_index v : output.vertices())
-    if(corner[v])
-      corners.push_back(std::size_t(v));
-  BI::Crease_network creases = crease_polylines(output.number_of_vertices(), edges, corners);
-  // Not part of the written mesh.
-  output.remove_property_map(crease);
-  output.remove_property_map(corner);
-  return {std::move(output), std::move(statistics), lattice, std::move(creases)};
+    r.statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(r.lattice, meshes, expression, r.soup.points,
+                                                                r.soup.triangles, np);
+  r.creases = crease_polylines(r.soup.points.size(), features.crease_edges, features.corner_vertices);
+  return r;
 }
 
 // The part of the result's volume in intervals of lattice lines that hold no
@@ -229,8 +239,7 @@ void print_result(std::FILE* out, const Result& r)
                r.lattice.spacing());
   std::fprintf(out, "  classification %.3f s, edge points %.3f s, triangulation %.3f s (%zu crossings)\n",
                s.seconds_classification, s.seconds_edges, s.seconds_triangulation, s.crossings);
-  std::fprintf(out, "  output %zu vertices, %zu triangles\n", std::size_t(r.mesh.number_of_vertices()),
-               std::size_t(r.mesh.number_of_faces()));
+  std::fprintf(out, "  output %zu vertices, %zu triangles\n", r.soup.points.size(), r.soup.triangles.size());
   if(s.feature_vertices > 0 || s.plain_feature_polygons > 0)
     std::fprintf(out,
                  "  sharp features: %zu feature vertices (%zu corners), %zu crease edges in %zu polylines, "
@@ -253,15 +262,15 @@ void report_result(Tool& tool, const Result& r)
   tool.stage("classification", "classified " + std::to_string(s.lattice_points) + " lattice points",
              s.seconds_classification);
   tool.stage("edges", "placed " + std::to_string(s.crossings) + " edge crossings", s.seconds_edges);
-  tool.stage("triangulation", "triangulated " + std::to_string(r.mesh.number_of_faces()) + " triangles",
+  tool.stage("triangulation", "triangulated " + std::to_string(r.soup.triangles.size()) + " triangles",
              s.seconds_triangulation);
   biso_tools::Json_object lattice;
   lattice.set_raw("points", biso_tools::json_number_array({double(n[0]), double(n[1]), double(n[2])}));
   lattice.set("spacing", r.lattice.spacing());
   biso_tools::Json_object& j = tool.summary();
   j.set("lattice", lattice);
-  j.set("vertices", std::size_t(r.mesh.number_of_vertices()));
-  j.set("faces", std::size_t(r.mesh.number_of_faces()));
+  j.set("vertices", r.soup.points.size());
+  j.set("faces", r.soup.triangles.size());
   j.set("crossings", s.crossings);
   j.set("feature_vertices", s.feature_vertices);
   j.set("corners", s.corner_vertices);
@@ -287,13 +296,13 @@ void resolution_problem(Tool& tool, const Options& options, const std::string& t
 // expression is false wherever some inputs overlap; we cannot tell cheaply,
 // so it is never a plain success unless the expression is false everywhere
 // (A & !A).
-bool suspicious_empty_result(const Result& r, const Options& options, const std::vector<Mesh>& meshes,
+bool suspicious_empty_result(const Result& r, const Options& options, const std::vector<Soup>& meshes,
                              const BI::Boolean_expression& requested)
 {
   bool inputs_empty = true;
   for(std::size_t i = 0; i < options.files.size(); ++i)
-    inputs_empty = inputs_empty && meshes[i].number_of_faces() == 0;
-  if(r.mesh.number_of_faces() != 0 || requested.evaluate(0) || inputs_empty)
+    inputs_empty = inputs_empty && meshes[i].triangles.empty();
+  if(!r.soup.triangles.empty() || requested.evaluate(0) || inputs_empty)
     return false;
   const std::size_t n = requested.number_of_variables();
   bool satisfiable = n > 20; // too many to enumerate: assume it can be true
@@ -304,7 +313,7 @@ bool suspicious_empty_result(const Result& r, const Options& options, const std:
 
 // The warnings about what the lattice missed: one line each, at most
 // `limit` lines.  Returns their number (all of them, not only printed).
-std::size_t resolution_warnings(Tool& tool, const Result& r, const Options& options, const std::vector<Mesh>& meshes,
+std::size_t resolution_warnings(Tool& tool, const Result& r, const Options& options, const std::vector<Soup>& meshes,
                                 const CGAL::Bbox_3& box, const BI::Boolean_expression& requested)
 {
   const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
@@ -376,12 +385,18 @@ void make_directory(const std::string& dir)
 }
 
 // The volume of the exact Boolean result of `a` and `b` (PMP corefinement, Epeck).
-double exact_result_volume(const Mesh& a, const Mesh& b, const std::string& op)
+double exact_result_volume(const Soup& a, const Soup& b, const std::string& op)
 {
   typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
-  Exact_mesh a_copy, b_copy, exact_result;
-  CGAL::copy_face_graph(a, a_copy);
-  CGAL::copy_face_graph(b, b_copy);
+  auto exact_mesh = [](const Soup& s) {
+    std::vector<Epeck::Point_3> points;
+    for(const auto& p : s.points)
+      points.emplace_back(p[0], p[1], p[2]);
+    Exact_mesh m;
+    PMP::polygon_soup_to_polygon_mesh(points, s.triangles, m);
+    return m;
+  };
+  Exact_mesh a_copy = exact_mesh(a), b_copy = exact_mesh(b), exact_result;
   if(op == "union") PMP::corefine_and_compute_union(a_copy, b_copy, exact_result);
   else if(op == "intersection") PMP::corefine_and_compute_intersection(a_copy, b_copy, exact_result);
   else PMP::corefine_and_compute_difference(a_copy, b_copy, exact_result);
@@ -394,12 +409,17 @@ int run_demo(Tool& tool, Options options)
   make_directory(dir);
   biso_tools::check_output_file(dir + "/A_sphere.off");
   // The built-in pair: a sphere and a torus that cuts through it.
-  std::vector<Mesh> meshes(2);
-  BI::make_icosphere(meshes[0], Point(0, 0, 0), 1.0, 4);
-  BI::make_torus(meshes[1], Point(0.9, 0, 0), 0.8, 0.35, 96, 48);
+  std::vector<Soup> meshes(2);
+  {
+    Mesh sphere, torus;
+    BI::make_icosphere(sphere, Point(0, 0, 0), 1.0, 4);
+    BI::make_torus(torus, Point(0.9, 0, 0), 0.8, 0.35, 96, 48);
+    meshes[0] = soup_of(sphere);
+    meshes[1] = soup_of(torus);
+  }
   for(const auto& [i, name] : {std::pair<int, const char*>{0, "/A_sphere.off"}, {1, "/B_torus.off"}})
   {
-    CGAL::IO::write_polygon_mesh(dir + name, meshes[i], CGAL::parameters::stream_precision(17));
+    BI::IO::write_triangle_soup(dir + name, meshes[i]);
     tool.output(dir + name);
   }
   std::FILE* out = tool.human();
@@ -407,7 +427,7 @@ int run_demo(Tool& tool, Options options)
                "Marching Cubes CSG of a sphere (A, %zu triangles) and a torus through it (B, %zu triangles),\n"
                "written with the results to %s/.  'exact' is the volume of the exact Boolean result\n"
                "of the same polyhedra (PMP corefinement with Epeck).\n\n",
-               std::size_t(meshes[0].number_of_faces()), std::size_t(meshes[1].number_of_faces()), dir.c_str());
+               meshes[0].triangles.size(), meshes[1].triangles.size(), dir.c_str());
   const std::pair<const char*, BI::Boolean_expression> operations[] = {
       {"union", BI::Boolean_expression::union_of(2)},
       {"intersection", BI::Boolean_expression::intersection_of(2)},
@@ -419,15 +439,15 @@ int run_demo(Tool& tool, Options options)
     const std::string op = name;
     const double exact = exact_result_volume(meshes[0], meshes[1], op);
     const Result r = run_csg(meshes, expression, options, bounding_box(meshes));
-    const double ours = BI::surveyor_volume(r.mesh);
+    const double ours = BI::surveyor_volume(r.soup);
     std::fprintf(out, "%s (%s)\n", name, expression.to_string().c_str());
     print_result(out, r);
     std::fprintf(out, "  volume %.6f   exact %.6f   relative error %.2e\n\n", ours, exact,
                  std::abs(ours - exact) / exact);
-    CGAL::IO::write_polygon_mesh(dir + "/" + op + ".off", r.mesh, CGAL::parameters::stream_precision(17));
+    BI::IO::write_triangle_soup(dir + "/" + op + ".off", r.soup);
     tool.output(dir + "/" + op + ".off");
     biso_tools::Json_object j;
-    j.set("faces", std::size_t(r.mesh.number_of_faces()));
+    j.set("faces", r.soup.triangles.size());
     j.set("volume", ours);
     j.set("exact_volume", exact);
     results.set(op, j);
@@ -441,26 +461,31 @@ std::string variable_name(std::size_t i)
   return i < 26 ? std::string(1, char('A' + i)) : "f" + std::to_string(i);
 }
 
-// Reads every input; an inward-oriented one is accepted with a note.
-std::vector<Mesh> read_inputs(Tool& tool, const std::vector<std::string>& files)
+// Reads every input into flat arrays (checked closed and consistently
+// oriented); an inward-oriented one is accepted with a note.
+std::vector<Soup> read_inputs(Tool& tool, const std::vector<std::string>& files)
 {
   const biso_tools::Stopwatch watch;
-  std::vector<Mesh> meshes(files.size());
+  std::vector<Soup> meshes(files.size());
   std::size_t triangles = 0;
   for(std::size_t i = 0; i < files.size(); ++i)
   {
     biso_tools::check_input_file(files[i]);
+    double signed_volume = 0;
     try
     {
-      BI::IO::read_closed_triangle_mesh(files[i], meshes[i], /* allow_inward = */ true);
+      meshes[i] = BI::IO::read_closed_triangle_soup(files[i], /* allow_inward = */ true, &signed_volume);
     }
     catch(const BI::Invalid_input_error& e)
     {
       throw biso_tools::File_error(files[i] + ": " + e.what());
     }
-    triangles += meshes[i].number_of_faces();
+    triangles += meshes[i].triangles.size();
     tool.input(files[i]);
-    if(BI::surveyor_volume(meshes[i], BI::parameters::signed_volume(true)) < 0)
+    if(meshes[i].triangulated_polygons > 0)
+      tool.note(files[i] + " (" + variable_name(i) + "): " + std::to_string(meshes[i].triangulated_polygons) +
+                " polygons with more than 3 vertices were split into triangles");
+    if(signed_volume < 0)
       tool.note(files[i] + " (" + variable_name(i) +
                 ") is oriented inward; the classification counts crossings, so it is used as the solid it bounds");
   }
@@ -479,7 +504,7 @@ struct Clip
 
 // Adds the clipping box to `meshes` and `expression` when the result is
 // unbounded and --unbounded box.
-Clip clip_unbounded(const Options& options, const CGAL::Bbox_3& box, std::vector<Mesh>& meshes,
+Clip clip_unbounded(const Options& options, const CGAL::Bbox_3& box, std::vector<Soup>& meshes,
                     BI::Boolean_expression& expression)
 {
   Clip c;
@@ -498,7 +523,7 @@ Clip clip_unbounded(const Options& options, const CGAL::Bbox_3& box, std::vector
     c.lo[a] = box.min(a) - spacing;
     c.hi[a] = box.max(a) + spacing;
   }
-  meshes.push_back(box_mesh(c.lo, c.hi));
+  meshes.push_back(box_soup(c.lo, c.hi));
   expression = and_with_new_variable(expression);
   c.margin_cells = 2;
   return c;
@@ -519,7 +544,7 @@ void print_summary(Tool& tool, const Options& options, const Result& r, const BI
   biso_tools::Json_object& j = tool.summary();
   j.set("unbounded", unbounded);
   j.set("clipped", clip.clip);
-  if(r.mesh.number_of_faces() == 0)
+  if(r.soup.triangles.empty())
   {
     std::fprintf(out, unbounded && !clip.clip ? "  the result is all of space (no surface)\n" : "  the result is empty\n");
     if(unbounded && !clip.clip) j.set_null("volume");
@@ -527,7 +552,7 @@ void print_summary(Tool& tool, const Options& options, const Result& r, const BI
   }
   else if(unbounded && !clip.clip)
   {
-    const double complement = -BI::surveyor_volume(r.mesh, BI::parameters::signed_volume(true));
+    const double complement = -BI::surveyor_volume(r.soup, BI::parameters::signed_volume(true));
     std::fprintf(out, "  the result is unbounded: its surface is inward-oriented; the complement has volume %.9g\n",
                  complement);
     j.set_null("volume");
@@ -535,7 +560,7 @@ void print_summary(Tool& tool, const Options& options, const Result& r, const BI
   }
   else
   {
-    const double volume = BI::surveyor_volume(r.mesh);
+    const double volume = BI::surveyor_volume(r.soup);
     std::fprintf(out, "  volume %.9g\n", volume);
     j.set("volume", volume);
   }
@@ -546,19 +571,24 @@ void write_outputs(Tool& tool, const Options& options, const Result& r)
   const biso_tools::Stopwatch watch;
   if(!options.output.empty())
   {
-    if(!CGAL::IO::write_polygon_mesh(options.output, r.mesh, CGAL::parameters::stream_precision(17)))
-      throw biso_tools::File_error(options.output + ": cannot write");
+    try
+    {
+      BI::IO::write_triangle_soup(options.output, r.soup);
+    }
+    catch(const std::runtime_error& e)
+    {
+      throw biso_tools::File_error(e.what());
+    }
     tool.output(options.output);
   }
   if(!options.creases_file.empty() || !options.corners_file.empty())
   {
-    std::vector<Point> points(r.mesh.points().begin(), r.mesh.points().end());
     try
     {
       if(!options.creases_file.empty())
-        BI::IO::write_polylines(options.creases_file, points, r.creases);
+        BI::IO::write_polylines(options.creases_file, r.soup.points, r.creases);
       if(!options.corners_file.empty())
-        BI::IO::write_corners(options.corners_file, points, r.creases);
+        BI::IO::write_corners(options.corners_file, r.soup.points, r.creases);
     }
     catch(const std::runtime_error& e)
     {
@@ -581,7 +611,7 @@ int run(Tool& tool, const Options& options)
   for(const std::string* f : {&options.output, &options.creases_file, &options.corners_file})
     if(!f->empty()) biso_tools::check_output_file(*f);
 
-  std::vector<Mesh> meshes = read_inputs(tool, options.files);
+  std::vector<Soup> meshes = read_inputs(tool, options.files);
   const CGAL::Bbox_3 box = bounding_box(meshes);
   const Clip clip = clip_unbounded(options, box, meshes, expression);
 

@@ -130,7 +130,10 @@ public:
    * \tparam TriangleMeshRange a range of models of `FaceListGraph` (or of
    *         `std::reference_wrapper`s to them) with triangle faces; the
    *         points of their `vertex_point` maps have `x()`, `y()`, `z()`
-   *         convertible to double by `CGAL::to_double()`.
+   *         convertible to double by `CGAL::to_double()`.  Its elements may
+   *         also be `Triangle_soup_3`s (flat arrays, as the package's readers
+   *         give them: no mesh to build), checked to be closed by the
+   *         linear-time edge test; a soup may have non-manifold vertices.
    *
    * \param meshes the closed triangle meshes; bit m of a point's mask is mesh m
    * \param lattice the lattice whose points are classified
@@ -200,7 +203,7 @@ public:
     std::vector<internal::Lattice_triangle> triangles;
     std::size_t total_faces = 0;
     for(const auto& element : meshes)
-      total_faces += std::size_t(num_faces(internal::unwrap_mesh(element)));
+      total_faces += internal::number_of_input_faces(internal::unwrap_mesh(element));
     triangles.reserve(total_faces);
     std::uint32_t m = 0;
     for(const auto& element : meshes)

@@ -62,7 +62,8 @@ namespace Boolean_isosurfacing {
  *
  * \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (TBB)
  * \tparam TriangleMeshRange a range of `FaceListGraph`s with triangle faces
- *         (or `std::reference_wrapper`s to them), as for `Lattice_classifier_3`
+ *         (or `std::reference_wrapper`s to them), or of `Triangle_soup_3`s,
+ *         as for `Lattice_classifier_3`
  * \tparam PointRange a container with `push_back()` of points constructible
  *         from three doubles (or a `std::array<double, 3>`)
  * \tparam TriangleRange a container with `push_back()` of `std::array<I, 3>`
