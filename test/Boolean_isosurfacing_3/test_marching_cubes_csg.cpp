@@ -16,6 +16,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/Lattice_classifier_3.h>
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
@@ -942,6 +943,65 @@ TEST(McCsgSparse, HugeLatticeAroundASmallBoxEqualsASmallLattice)
   const double volume = check_output(far, "huge lattice");
   EXPECT_NEAR(volume, exact, 1e-9 * exact);
   EXPECT_NEAR(check_output(near, "small lattice"), volume, 1e-12 * exact);
+}
+
+// The sparse builder against a dense reference written here: every point's
+// state from mask(), every cube through the same table, vertices numbered
+// plane by plane by edge id 3 (i + nx j) + axis (the documented order).  The
+// triangles must be the same, index for index, for an expression whose
+// result is unbounded (!A | B: rows inside everywhere but near the surface)
+// and one that is not, on a lattice that cuts the inputs.
+TEST(McCsgSparse, EqualsADenseReferenceMarchingCubes)
+{
+  const Mesh a = make_sphere(Point(0, 0, 0), 1.0, 3);
+  const Mesh b = make_box(Point(0.2, -0.4, -0.3), Point(1.4, 0.5, 0.6));
+  const std::vector<const Mesh*> meshes = {&a, &b};
+  // Cuts the sphere at x = -0.8 (a lattice narrower than the inputs).
+  const BI::Regular_lattice_3 lattice({{-0.8, -1.3, -1.25}}, 0.0731, {{33, 37, 36}});
+  const BI::Lattice_classifier_3 classifier = BI::Lattice_classifier_3::classify(refs(meshes), lattice);
+  const BI::Marching_cubes_table& table = BI::Marching_cubes_table::instance();
+  for(const char* text : {"A & !B", "!A | B"})
+  {
+    SCOPED_TRACE(text);
+    const BI::Boolean_expression e = BI::Boolean_expression::parse(text);
+    const Soup soup = run_csg(meshes, e, lattice, false);
+    const auto& n = lattice.number_of_points();
+    auto state = [&](std::size_t i, std::size_t j, std::size_t k) { return e.evaluate(classifier.mask(i, j, k)); };
+    // Vertex number of every vertex edge, in the documented order.
+    std::map<std::array<std::size_t, 4>, std::size_t> vertex;
+    for(std::size_t k = 0; k < n[2]; ++k)
+      for(std::size_t j = 0; j < n[1]; ++j)
+        for(std::size_t i = 0; i < n[0]; ++i)
+        {
+          const bool s = state(i, j, k);
+          if(i + 1 < n[0] && s != state(i + 1, j, k)) vertex.emplace(std::array<std::size_t, 4>{{i, j, k, 0}}, vertex.size());
+          if(j + 1 < n[1] && s != state(i, j + 1, k)) vertex.emplace(std::array<std::size_t, 4>{{i, j, k, 1}}, vertex.size());
+          if(k + 1 < n[2] && s != state(i, j, k + 1)) vertex.emplace(std::array<std::size_t, 4>{{i, j, k, 2}}, vertex.size());
+        }
+    std::vector<Triangle> expected;
+    for(std::size_t k = 0; k + 1 < n[2]; ++k)
+      for(std::size_t j = 0; j + 1 < n[1]; ++j)
+        for(std::size_t i = 0; i + 1 < n[0]; ++i)
+        {
+          unsigned code = 0;
+          for(int c = 0; c < 8; ++c)
+            code |= unsigned(state(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1))) << c;
+          for(const BI::Marching_cubes_table::Triangle& t : table.triangles(code))
+          {
+            Triangle out;
+            for(int v = 0; v < 3; ++v)
+            {
+              const std::array<int, 3> o = BI::cube_edge_origin_offset(t[v]);
+              out[v] = vertex.at({{i + std::size_t(o[0]), j + std::size_t(o[1]), k + std::size_t(o[2]),
+                                   std::size_t(BI::cube_edge_axis(t[v]))}});
+            }
+            expected.push_back(out);
+          }
+        }
+    EXPECT_GT(expected.size(), 1000u);
+    EXPECT_EQ(soup.points.size(), vertex.size());
+    EXPECT_TRUE(soup.triangles == expected);
+  }
 }
 
 // A lattice with 2^26 points or more along an axis is refused (the width

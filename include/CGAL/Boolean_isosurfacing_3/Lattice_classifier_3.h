@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -87,11 +88,13 @@ struct Lattice_crossing
  *
  * The classification is stored *sparsely*: a point's mask is the mask of the
  * first point of its x line (`start_mask()`) toggled by the crossings of the
- * line before it, so no per-point array exists.  Memory: 16 bytes per
- * crossing, 4 bytes per lattice line and 8 more per x line, so it grows with
- * the surface (crossings) and the lattice's cross-sections (lines), not with
- * its volume.  `mask()` costs a walk along the point's x line; algorithms walk
- * the lines themselves (`crossings_on_line()`).
+ * line before it, so no per-point array exists, and only the lines that hold
+ * crossings (or, along x, start inside a mesh) are stored.  Memory: 16 bytes
+ * per crossing, 8 per stored line (16 along x) and 8 per row of lines, so it
+ * grows with the surface, not with the lattice's volume nor its
+ * cross-sections.  `mask()` and `crossings_on_line()` find their line by a
+ * binary search in its row; algorithms walk the stored lines of a row
+ * (`stored_lines()`).
  */
 class Lattice_classifier_3
 {
@@ -237,9 +240,51 @@ public:
   /// `line_index()`) is inside mesh m.
   std::uint64_t start_mask(std::size_t x_line) const
   {
-    CGAL_precondition(x_line < m_start_masks.size());
-    return m_start_masks[x_line];
+    CGAL_precondition(x_line < number_of_lines(0));
+    const std::size_t e = find_line(0, x_line);
+    return e == no_line ? 0 : m_start_masks[e];
   }
+
+  /// A line along an axis that holds crossings (or, along x, whose first
+  /// point is inside a mesh): its index `u` within its row, its crossings
+  /// and (along x) its start mask.
+  struct Stored_line
+  {
+    std::size_t u;
+    Crossing_range crossings;
+    std::uint64_t start_mask;
+  };
+
+  /// The stored lines of row `v` along `axis` (the lines whose v index is
+  /// `v`, see `line_index()`), by increasing u: a random-access range of
+  /// `Stored_line`.  Every other line of the row has no crossing and (along
+  /// x) starts outside every mesh.
+  class Stored_lines
+  {
+  public:
+    Stored_lines(const Lattice_classifier_3& c, int axis, std::size_t v)
+      : m_c(&c), m_axis(axis), m_first(c.m_row_begin[axis][v]), m_last(c.m_row_begin[axis][v + 1])
+    {}
+    std::size_t size() const { return m_last - m_first; }
+    bool empty() const { return m_first == m_last; }
+    Stored_line operator[](std::size_t k) const { return m_c->stored_line(m_axis, m_first + k); }
+
+  private:
+    const Lattice_classifier_3* m_c;
+    int m_axis;
+    std::size_t m_first, m_last;
+  };
+
+  /// The stored lines of row `v` along `axis`.
+  Stored_lines stored_lines(int axis, std::size_t v) const
+  {
+    CGAL_precondition(0 <= axis && axis < 3 && v + 1 < m_row_begin[axis].size());
+    return Stored_lines(*this, axis, v);
+  }
+
+  /// The number of rows of lines along `axis` (the number of lattice points
+  /// along its v axis).
+  std::size_t number_of_rows(int axis) const { return m_row_begin[axis].size() - 1; }
 
   /// Bit m set iff lattice point (i, j, k) is inside mesh m: the line's
   /// start mask toggled by the crossings before the point (O(crossings on
@@ -249,8 +294,12 @@ public:
     CGAL_precondition(i < m_lattice.number_of_points(0) && j < m_lattice.number_of_points(1) &&
                       k < m_lattice.number_of_points(2));
     const std::size_t line = line_index(0, i, j, k);
-    std::uint64_t mask = m_start_masks[line];
-    for(const Crossing& c : crossings_on_line(0, line))
+    const std::size_t e = find_line(0, line);
+    if(e == no_line)
+      return 0;
+    const Stored_line stored = stored_line(0, e);
+    std::uint64_t mask = stored.start_mask;
+    for(const Crossing& c : stored.crossings)
     {
       if(c.index > i)
         break;
@@ -272,8 +321,15 @@ public:
     return ((mask(i, j, k) >> mesh) & 1) != 0;
   }
 
-  /// Number of lattice lines along `axis`.
-  std::size_t number_of_lines(int axis) const { return m_line_begin[axis].size() - 1; }
+  /// Number of lattice lines along `axis` (stored or not).
+  std::size_t number_of_lines(int axis) const
+  {
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    return n[internal::line_u_axis(axis)] * n[internal::line_v_axis(axis)];
+  }
+
+  /// Number of stored lines along `axis` (see `stored_lines()`).
+  std::size_t number_of_stored_lines(int axis) const { return m_row_begin[axis].back(); }
 
   /// Index of the line along `axis` through point (i, j, k): the two other
   /// indices, the smaller axis varying fastest.
@@ -293,8 +349,8 @@ public:
   Crossing_range crossings_on_line(int axis, std::size_t line) const
   {
     CGAL_precondition(0 <= axis && axis < 3 && line < number_of_lines(axis));
-    const Crossing* base = m_crossings[axis].data();
-    return Crossing_range(base + m_line_begin[axis][line], base + m_line_begin[axis][line + 1]);
+    const std::size_t e = find_line(axis, line);
+    return e == no_line ? Crossing_range() : stored_line(axis, e).crossings;
   }
 
   /// The crossings on the lattice edge from (i, j, k) to its neighbour along
@@ -354,7 +410,7 @@ public:
       {
         const Crossing_range line = crossings_on_line(0, j + ny * k);
         const Crossing* c = line.begin();
-        std::uint64_t mask = m_start_masks[j + ny * k];
+        std::uint64_t mask = start_mask(j + ny * k);
         for(std::size_t i = 0; i < nx; ++i)
         {
           mask ^= i == 0 ? 0 : toggles_at(c, line.end(), i);
@@ -400,6 +456,35 @@ public:
 private:
   // Offsets of the lines into the crossings of their axis (checked to fit).
   typedef std::uint32_t Line_offset;
+
+  // A stored line: its u index and its first crossing (the next entry's
+  // `first` ends its crossings; a last entry per axis closes the array).
+  struct Line_entry
+  {
+    std::uint32_t u;
+    Line_offset first;
+  };
+  static constexpr std::size_t no_line = std::size_t(-1);
+
+  // The entry of a line (u + nu * v), or no_line: a binary search in its row.
+  std::size_t find_line(int axis, std::size_t line) const
+  {
+    const std::size_t nu = m_lattice.number_of_points(internal::line_u_axis(axis));
+    const std::size_t u = line % nu, v = line / nu;
+    const Line_entry* first = m_lines[axis].data() + m_row_begin[axis][v];
+    const Line_entry* last = m_lines[axis].data() + m_row_begin[axis][v + 1];
+    const Line_entry* e =
+        std::lower_bound(first, last, u, [](const Line_entry& x, std::size_t value) { return x.u < value; });
+    return e != last && e->u == u ? std::size_t(e - m_lines[axis].data()) : no_line;
+  }
+
+  Stored_line stored_line(int axis, std::size_t e) const
+  {
+    const Crossing* base = m_crossings[axis].data();
+    const Line_entry* entry = m_lines[axis].data() + e;
+    return Stored_line{entry->u, Crossing_range(base + entry[0].first, base + entry[1].first),
+                       axis == 0 ? m_start_masks[e] : 0};
+  }
 
   // One crossing of a row of lines (the lines along an axis with a common v index).
   struct Row_crossing
@@ -490,17 +575,28 @@ private:
       blocks[axis].resize(T);
       internal::concurrent_for<ConcurrencyTag>(
           T, [&](std::size_t t) { blocks[axis][t] = line_block(triangles[t], axis, coordinates); });
-      for(const Line_block& b : blocks[axis])
-        if(!b.empty())
-        {
-          candidates[axis] += b.size();
-          binned[axis] += b.v1 - b.v0;
-        }
+      const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
+      const double cell_area = m_lattice.spacing() * m_lattice.spacing();
+      for(std::size_t t = 0; t < T; ++t)
+      {
+        const Line_block& b = blocks[axis][t];
+        if(b.empty())
+          continue;
+        // The lines through a triangle's projection are lattice points of a
+        // convex region: at most area / r^2 + perimeter / (2 r) + 1 of them
+        // (Nosarzewska's bound), and at most its block.
+        const auto& q = triangles[t].p;
+        const double area = 0.5 * std::abs((q[1][u] - q[0][u]) * (q[2][v] - q[0][v]) -
+                                           (q[2][u] - q[0][u]) * (q[1][v] - q[0][v]));
+        double perimeter = 0;
+        for(int e = 0; e < 3; ++e)
+          perimeter += std::hypot(q[(e + 1) % 3][u] - q[e][u], q[(e + 1) % 3][v] - q[e][v]);
+        const double bound = area / cell_area + perimeter / (2 * m_lattice.spacing()) + 1;
+        candidates[axis] += std::size_t((std::min)(double(b.size()), bound));
+        binned[axis] += b.v1 - b.v0;
+      }
     }
     check_memory(triangles.size(), candidates, binned, max_memory_bytes, reserved_bytes);
-
-    // Written by the x pass, line by line, in parallel.
-    m_start_masks.assign(n[1] * n[2], 0);
 
     const double weights[4] = {0, 0.5, 0.75, 1.0};
     for(int axis = 0; axis < 3; ++axis)
@@ -518,13 +614,16 @@ private:
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
     // Doubles: the sum must not wrap around.
-    double bytes = double(reserved_bytes) + 8.0 * double(n[1]) * double(n[2]) + // the start masks
+    double bytes = double(reserved_bytes) +
                    double(number_of_triangles) * double(sizeof(internal::Lattice_triangle) + 3 * sizeof(Line_block));
     double largest_axis = 0;
     for(int axis = 0; axis < 3; ++axis)
     {
       const double lines = double(n[internal::line_u_axis(axis)]) * double(n[internal::line_v_axis(axis)]);
-      bytes += double(sizeof(Line_offset)) * (lines + 1); // the line offsets stay
+      (void)lines;
+      // The rows, and at most one stored line (and, along x, start mask) per candidate crossing.
+      bytes += 8.0 * double(n[internal::line_v_axis(axis)] + 1) +
+               double(candidates[axis]) * double(sizeof(Line_entry) + (axis == 0 ? 8 : 0));
       // The offsets are 32-bit: an upper bound of the crossings must fit.
       if(double(candidates[axis]) >= double(std::numeric_limits<Line_offset>::max()))
         throw Lattice_too_large_error("the lattice would hold more than 2^32 crossings along " +
@@ -548,6 +647,48 @@ private:
     }
   }
 
+  // An interval [lo, hi] along u that contains the projection of `t` on the
+  // row of lines at v = `pv`: the extent computed in double, widened by a
+  // bound of its rounding error (a few ulps of the triangle's coordinates);
+  // false if the row misses the triangle.
+  static bool scan_extent(const internal::Lattice_triangle& t, int u, int v, double pv, double& lo, double& hi)
+  {
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    double magnitude = std::abs(pv);
+    for(int e = 0; e < 3; ++e)
+      magnitude = (std::max)({magnitude, std::abs(t.p[e][u]), std::abs(t.p[e][v])});
+    // x = a_u + (pv - a_v) (b_u - a_u) / (b_v - a_v): each operation is off by
+    // at most half an ulp of a value bounded by 2 * magnitude.
+    const double error = 64 * std::numeric_limits<double>::epsilon() * magnitude +
+                         std::numeric_limits<double>::denorm_min();
+    for(int e = 0; e < 3; ++e)
+    {
+      const std::array<double, 3>& a = t.p[e];
+      const std::array<double, 3>& b = t.p[(e + 1) % 3];
+      if((a[v] - pv) * (b[v] - pv) > 0)
+        continue; // the edge is on one side of the row
+      if(a[v] == b[v])
+      {
+        lo = (std::min)({lo, a[u], b[u]});
+        hi = (std::max)({hi, a[u], b[u]});
+        continue;
+      }
+      const double x = a[u] + (pv - a[v]) * (b[u] - a[u]) / (b[v] - a[v]);
+      lo = (std::min)(lo, x);
+      hi = (std::max)(hi, x);
+    }
+    lo -= error;
+    hi += error;
+    if(!(std::isfinite(lo) && std::isfinite(hi)))
+    {
+      // Overflow far from the lattice: scan the whole block.
+      lo = -std::numeric_limits<double>::infinity();
+      hi = std::numeric_limits<double>::infinity();
+    }
+    return lo <= hi;
+  }
+
   // Sorts the crossings of a row by (u, index, position, mesh): a counting
   // sort on u (there are few crossings per line), then an insertion sort of
   // each line.
@@ -555,7 +696,9 @@ private:
   {
     if(row.size() < 2)
       return;
-    if(row.size() < 32)
+    // The counting sort costs O(nu): only where the row is dense in u (a
+    // sparse row of a fine lattice would pay for the whole cross-section).
+    if(row.size() < 32 || 4 * row.size() < nu)
     {
       std::sort(row.begin(), row.end());
       return;
@@ -609,6 +752,8 @@ private:
     }
 
     std::vector<std::vector<Row_crossing>> rows(nv);
+    // Per row, along x: the start masks of its lines, (u, mask), increasing u, non-zero.
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint64_t>>> starts(axis == 0 ? nv : 0);
     internal::concurrent_for<ConcurrencyTag>(
         nv,
         [&](std::size_t r) {
@@ -619,7 +764,18 @@ private:
           {
             const internal::Lattice_triangle& t = triangles[row_triangles[e]];
             const Line_block& b = blocks[row_triangles[e]];
-            for(std::uint32_t ju = b.u0; ju < b.u1; ++ju)
+            // Only the lines within the triangle's extent on this row (up to
+            // the rounding of that extent) can cross it; the exact test below
+            // decides.  For a sliver across many cells: its area, not its box.
+            double lo, hi;
+            if(!scan_extent(t, u, v, p[v], lo, hi))
+              continue;
+            auto first_not_below = [&](double value) {
+              return std::uint32_t(internal::first_index_not_below(coordinates[u].data(), nu, m_lattice.spacing(), value));
+            };
+            const std::uint32_t first = (std::max)(b.u0, first_not_below(lo));
+            const std::uint32_t last = (std::min)(b.u1, first_not_below(hi) + 1);
+            for(std::uint32_t ju = first; ju < last; ++ju)
             {
               p[u] = coordinates[u][ju];
               if(!internal::line_crosses_triangle(t, axis, p[u], p[v]))
@@ -642,7 +798,14 @@ private:
             // mask; the others stay and define the rest of the line.
             for(const Row_crossing& c : out)
               if(c.index == 0)
-                m_start_masks[c.u + nu * r] ^= std::uint64_t(1) << c.mesh;
+              {
+                if(starts[r].empty() || starts[r].back().first != c.u)
+                  starts[r].emplace_back(c.u, 0);
+                starts[r].back().second ^= std::uint64_t(1) << c.mesh;
+              }
+            starts[r].erase(std::remove_if(starts[r].begin(), starts[r].end(),
+                                           [](const std::pair<std::uint32_t, std::uint64_t>& s) { return s.second == 0; }),
+                            starts[r].end());
             out.erase(std::remove_if(out.begin(), out.end(), [](const Row_crossing& c) { return c.index == 0; }),
                       out.end());
           }
@@ -657,17 +820,57 @@ private:
         },
         progress.part(0, 0.95));
 
-    // Gather the rows into one array, line by line (line = ju + nu * r: the
-    // rows are consecutive blocks of lines, already sorted).
-    std::vector<Line_offset>& line_begin = m_line_begin[axis];
-    line_begin.assign(nu * nv + 1, 0);
-    std::vector<std::size_t> row_offset(nv + 1, 0);
+    // Gather the rows into one array, line by line: the stored lines of a
+    // row are the distinct u of its crossings (and, along x, of its start
+    // masks), already sorted.
+    auto for_each_line = [&](std::size_t r, const auto& f) { // f(u, first crossing, end, start mask)
+      const std::vector<Row_crossing>& row = rows[r];
+      const std::pair<std::uint32_t, std::uint64_t>* s = axis == 0 ? starts[r].data() : nullptr;
+      const std::pair<std::uint32_t, std::uint64_t>* s_end = axis == 0 ? s + starts[r].size() : nullptr;
+      std::size_t c = 0;
+      while(c < row.size() || s != s_end)
+      {
+        std::uint32_t line_u = std::numeric_limits<std::uint32_t>::max();
+        if(c < row.size()) line_u = row[c].u;
+        if(s != s_end) line_u = (std::min)(line_u, s->first);
+        std::uint64_t mask = 0;
+        if(s != s_end && s->first == line_u)
+          mask = (s++)->second;
+        const std::size_t first = c;
+        while(c < row.size() && row[c].u == line_u)
+          ++c;
+        f(line_u, first, c, mask);
+      }
+    };
+    std::vector<std::size_t> row_offset(nv + 1, 0), line_offset(nv + 1, 0);
+    internal::concurrent_for<ConcurrencyTag>(nv, [&](std::size_t r) {
+      std::size_t lines = 0;
+      for_each_line(r, [&](std::uint32_t, std::size_t, std::size_t, std::uint64_t) { ++lines; });
+      line_offset[r + 1] = lines;
+      row_offset[r + 1] = rows[r].size();
+    });
     for(std::size_t r = 0; r < nv; ++r)
-      row_offset[r + 1] = row_offset[r] + rows[r].size();
+    {
+      row_offset[r + 1] += row_offset[r];
+      line_offset[r + 1] += line_offset[r];
+    }
     std::vector<Crossing>& crossings = m_crossings[axis];
     crossings.resize(row_offset[nv]);
+    std::vector<Line_entry>& lines = m_lines[axis];
+    lines.resize(line_offset[nv] + 1);
+    lines.back() = Line_entry{0, Line_offset(crossings.size())};
+    if(axis == 0)
+      m_start_masks.resize(line_offset[nv]);
+    m_row_begin[axis] = line_offset;
     internal::concurrent_for<ConcurrencyTag>(nv, [&](std::size_t r) {
-      std::size_t out = row_offset[r];
+      std::size_t out = row_offset[r], entry = line_offset[r];
+      for_each_line(r, [&](std::uint32_t line_u, std::size_t first, std::size_t last, std::uint64_t mask) {
+        lines[entry] = Line_entry{line_u, Line_offset(row_offset[r] + first)};
+        if(axis == 0)
+          m_start_masks[entry] = mask;
+        ++entry;
+        (void)last;
+      });
       for(const Row_crossing& c : rows[r])
       {
         Crossing& stored = crossings[out++];
@@ -675,19 +878,18 @@ private:
         stored.index = c.index;
         stored.mesh = c.mesh;
         stored.triangle = c.triangle;
-        ++line_begin[c.u + nu * r + 1];
       }
       std::vector<Row_crossing>().swap(rows[r]);
     });
-    for(std::size_t l = 0; l < nu * nv; ++l)
-      line_begin[l + 1] += line_begin[l];
     progress.report(1.0);
   }
 
   Regular_lattice_3 m_lattice;
   std::size_t m_number_of_meshes = 0;
-  std::vector<std::uint64_t> m_start_masks; // per x line
-  std::array<std::vector<Line_offset>, 3> m_line_begin;
+  // Per axis: the stored lines of row v are m_lines[m_row_begin[v] .. m_row_begin[v + 1]).
+  std::array<std::vector<std::size_t>, 3> m_row_begin;
+  std::array<std::vector<Line_entry>, 3> m_lines;
+  std::vector<std::uint64_t> m_start_masks; // per stored x line
   std::array<std::vector<Crossing>, 3> m_crossings;
   std::array<double, 3> m_seconds{{0, 0, 0}};
   std::size_t m_estimated_bytes = 0;

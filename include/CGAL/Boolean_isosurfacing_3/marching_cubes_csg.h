@@ -24,6 +24,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -142,9 +143,16 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
       internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, soup, np);
   points.clear();
   triangles.clear();
-  for(const std::array<double, 3>& p : soup.points)
-    points.push_back(internal::make_output_point<Point>(p));
-  std::vector<std::array<double, 3>>().swap(soup.points);
+  if constexpr(std::is_same<PointRange, std::vector<std::array<double, 3>>>::value)
+    points.swap(soup.points); // the package's own soup type: no copy
+  else
+  {
+    for(const std::array<double, 3>& p : soup.points)
+      points.push_back(internal::make_output_point<Point>(p));
+    std::vector<std::array<double, 3>>().swap(soup.points);
+  }
+  if constexpr(std::is_same<TriangleRange, std::vector<std::array<std::uint32_t, 3>>>::value)
+    triangles.reserve(soup.triangles.size());
   for(const std::array<std::size_t, 3>& t : soup.triangles)
     triangles.push_back(internal::make_output_triangle<Triangle>(t));
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sharp_feature_output_t>::value)

@@ -177,7 +177,7 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   const std::size_t max_memory = choose_parameter(get_parameter(np, internal_np::max_memory_bytes),
                                                   Lattice_classifier_3::default_max_memory_bytes);
   typedef internal::Marching_cubes_csg_builder<ConcurrencyTag> Builder;
-  const std::size_t reserved = sub.number_of_points(1) * sub.number_of_points(2) * Builder::bytes_per_row();
+  const std::size_t reserved = sub.number_of_points(2) * Builder::bytes_per_plane();
   const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
       std::move(triangles), number_of_meshes, sub, max_memory, reserved, internal::Progress());
   internal::Marching_cubes_csg::Feature_settings plain;
@@ -199,30 +199,14 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
                             internal::Progress());
   range.statistics.seconds_triangulation = internal::seconds_since(start);
 
-  // The boundary planes' vertex edges, from the states (the expression of
-  // the masks), in the builder's order: j, then i, then axis.
-  const internal::Expression_evaluator inside(expression);
-  const std::size_t nx = sub.number_of_points(0), ny = sub.number_of_points(1), top = sub.number_of_points(2) - 1;
-  auto state = [&](std::size_t i, std::size_t j, std::size_t k) { return inside(classifier.mask(i, j, k)); };
-  auto plane_edges = [&](std::size_t k, bool with_z, std::vector<std::uint64_t>& out) {
-    for(std::size_t j = 0; j < ny; ++j)
-      for(std::size_t i = 0; i < nx; ++i)
-      {
-        const bool s = state(i, j, k);
-        const std::uint64_t id = 3 * std::uint64_t(i + nx * j);
-        if(i + 1 < nx && s != state(i + 1, j, k))
-          out.push_back(id);
-        if(j + 1 < ny && s != state(i, j + 1, k))
-          out.push_back(id + 1);
-        if(with_z && s != state(i, j, k + 1))
-          out.push_back(id + 2);
-      }
-  };
+  // The boundary planes' vertex edges, in the builder's order: j, then i,
+  // then axis (the top plane of the sub-lattice has no z edges).
+  const std::size_t top = sub.number_of_points(2) - 1;
   if(first_layer > 0)
-    plane_edges(0, true, range.bottom_edges);
+    builder.plane_vertex_edges(0, range.bottom_edges);
   if(last_layer < nz - 1)
   {
-    plane_edges(top, false, range.top_edges);
+    builder.plane_vertex_edges(top, range.top_edges);
     // The top plane's vertices are the builder's last ones: move them out.
     const std::size_t owned = range.points.size() - range.top_edges.size();
     range.top_points.assign(range.points.begin() + std::ptrdiff_t(owned), range.points.end());

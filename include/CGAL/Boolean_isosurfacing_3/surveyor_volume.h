@@ -439,6 +439,10 @@ std::array<double, 3> finite_centroid(const PointArray& points)
  *     \cgalParamDescription{with `false` a negative result (an inward-oriented surface) throws `Inward_oriented_mesh_error`; with `true` the signed, winding-number-weighted volume is returned for any closed triangle mesh, inward-oriented or self-intersecting}
  *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{check_closedness}
+ *     \cgalParamDescription{with `false` the edge check is skipped, for a soup the caller knows to be closed (a `marching_cubes_csg()` output whose `boundary_points_inside` is 0): it needs 8 bytes per directed edge, more than the soup itself; the result means nothing for an open soup}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \throws Empty_input_error, Invalid_input_error (an index out of range or
@@ -457,7 +461,8 @@ double surveyor_volume(const Triangle_soup_3& soup, const CGAL_NP_CLASS& np = pa
   if(soup.points.size() >= (std::size_t(1) << 32))
     throw Invalid_input_error("the polygon soup has 2^32 points or more");
   internal::check_triangle_indices(soup.triangles, soup.points.size());
-  internal::check_soup_is_closed(soup.triangles, soup.points.size());
+  if(choose_parameter(get_parameter(np, internal_np::check_closedness), true))
+    internal::check_soup_is_closed(soup.triangles, soup.points.size());
   const std::array<double, 3> c = internal::finite_centroid(soup.points);
   const double result = internal::sum_of_signed_tetrahedra_of_arrays(soup.points, soup.triangles, c[0], c[1], c[2]);
   internal::check_orientation_of_result(result, signed_result);

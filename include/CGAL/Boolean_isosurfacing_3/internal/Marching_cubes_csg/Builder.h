@@ -110,10 +110,11 @@ struct Csg_soup
 // state of its first point and the sorted list of the row's *vertex edges*,
 // coded 3 * i + axis: its x edge (i, i + 1), and the y edge to the next row
 // and the z edge to the next plane at point i, whose ends have different
-// states.  These lists hold one entry per output vertex, in vertex order,
-// so memory and work grow with the surface, not with the lattice: a row
-// with an empty list is uniform and equal to its neighbours, and is skipped
-// in O(1).  (The x entries alone give the states along the row.)
+// states.  These lists hold one entry per output vertex, in vertex order.
+// Only the rows whose x line the classifier stores (it holds crossings or
+// starts inside a mesh) can differ from the state of the empty mask, and
+// only the rows with a vertex edge are listed, so memory and work grow with
+// the surface, not with the lattice nor its cross-sections.
 template <typename ConcurrencyTag>
 class Marching_cubes_csg_builder
 {
@@ -127,44 +128,30 @@ public:
   Marching_cubes_csg_builder(const Lattice_classifier_3& classifier, const Boolean_expression& expression,
                              const Feature_settings& features, const std::vector<Triangle_tangent>& tangents)
     : m_classifier(classifier), m_lattice(classifier.lattice()), m_inside(expression),
-      m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents)
+      m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents), m_empty_state(m_inside(0))
   {}
 
-  // Bytes per x row of lattice points and per output vertex that the
-  // builder allocates on top of the classifier (for its memory estimate).
-  static std::size_t bytes_per_row() { return sizeof(std::uint32_t) + 1; }
-  static std::size_t bytes_per_vertex() { return 2 * sizeof(std::uint32_t); }
+  // Bytes per lattice plane and per output vertex that the builder
+  // allocates on top of the classifier (for its memory estimate).
+  static std::size_t bytes_per_plane() { return 2 * sizeof(Plane_rows); }
+  static std::size_t bytes_per_vertex() { return 4 * sizeof(std::uint32_t); }
 
   // The vertex edge lists of every row; returns the number of lattice
   // boundary points inside the result.
   std::size_t compute_states(const Progress& progress)
   {
-    const std::size_t ny = m_n[1], nz = m_n[2];
+    const std::size_t nz = m_n[2];
     // The x changes of every row first: the y and z edges compare two rows.
-    std::vector<Plane_changes> changes(nz);
+    m_changes.assign(nz, Plane_changes());
     concurrent_for<ConcurrencyTag>(
-        nz, [&](std::size_t k) { x_changes_of_plane(k, changes[k]); }, progress.part(0, 0.4));
+        nz, [&](std::size_t k) { x_changes_of_plane(k, m_changes[k]); }, progress.part(0, 0.4));
     m_planes.assign(nz, Plane_rows());
     concurrent_for<ConcurrencyTag>(
-        nz,
-        [&](std::size_t k) { vertex_edges_of_plane(k, changes[k], k + 1 < nz ? &changes[k + 1] : nullptr, m_planes[k]); },
-        progress.part(0.4, 1));
+        nz, [&](std::size_t k) { vertex_edges_of_plane(k, m_planes[k]); }, progress.part(0.4, 1));
     m_vertex_offset.assign(nz + 1, 0);
     for(std::size_t k = 0; k < nz; ++k)
       m_vertex_offset[k + 1] = m_vertex_offset[k] + m_planes[k].codes.size();
-    // Points on the lattice boundary: whole rows on the boundary planes, the
-    // two ends of the other rows.
-    std::size_t boundary_inside = 0;
-    for(std::size_t k = 0; k < nz; ++k)
-      for(std::size_t j = 0; j < ny; ++j)
-      {
-        const Row row = row_of(k, j);
-        if(k == 0 || j == 0 || k + 1 == nz || j + 1 == ny)
-          boundary_inside += row.inside_points(m_n[0]);
-        else
-          boundary_inside += std::size_t(row.first) + (m_n[0] > 1 ? std::size_t(row.last_state()) : 0);
-      }
-    return boundary_inside;
+    return boundary_points_inside();
   }
 
   // Vertices are numbered plane by plane (z), and in a plane by edge id
@@ -180,6 +167,16 @@ public:
       m_normals.resize(points.size());
     concurrent_for<ConcurrencyTag>(
         nz, [&](std::size_t k) { vertices_of_plane(k, points); }, progress);
+  }
+
+  // The edge ids 3 * (i + nx * j) + axis of the vertices of plane k, in
+  // vertex order (for the welding of slab ranges).
+  void plane_vertex_edges(std::size_t k, std::vector<std::uint64_t>& out) const
+  {
+    const Plane_rows& p = m_planes[k];
+    for(std::size_t r = 0; r < p.rows.size(); ++r)
+      for(std::size_t c = p.begin[r]; c < p.begin[r + 1]; ++c)
+        out.push_back(std::uint64_t(p.codes[c]) + 3 * std::uint64_t(m_n[0]) * p.rows[r]);
   }
 
   // With sharp features, `points` (the edge vertices) gets the feature
@@ -260,75 +257,97 @@ public:
   }
 
 private:
-  // The x changes of the rows of one plane: row j's are
-  // changes[begin[j] .. begin[j + 1]), the indices i whose x edge (i, i + 1)
-  // joins two different states.
+  // The x rows of one plane whose x line the classifier stores, by
+  // increasing j: row rows[r] has first state first[r] and x changes
+  // changes[begin[r] .. begin[r + 1]) (the indices i whose x edge (i, i + 1)
+  // joins two different states).  Every other row has the state of the
+  // empty mask everywhere.
   struct Plane_changes
   {
-    std::vector<std::uint32_t> begin;
+    std::vector<std::uint32_t> rows;
+    std::vector<std::uint32_t> begin{0};
     std::vector<std::uint32_t> changes;
     std::vector<std::uint8_t> first;
   };
 
-  // The vertex edges of the rows of one plane: row j's are
-  // codes[begin[j] .. begin[j + 1]), increasing 3 * i + axis.
+  // The x rows of one plane with vertex edges, by increasing j: row rows[r]
+  // has the codes codes[begin[r] .. begin[r + 1]) (increasing 3 * i + axis).
   struct Plane_rows
   {
-    std::vector<std::uint32_t> begin;
+    std::vector<std::uint32_t> rows;
+    std::vector<std::uint32_t> begin{0};
     std::vector<std::uint32_t> codes;
-    std::vector<std::uint8_t> first;
   };
 
-  // One row: its first state and its vertex edges.
-  struct Row
+  // A row's states: its first state and its x changes.
+  struct Row_states
   {
-    const std::uint32_t* begin = nullptr;
-    const std::uint32_t* end = nullptr;
     bool first = false;
+    const std::uint32_t* changes = nullptr;
+    const std::uint32_t* changes_end = nullptr;
 
-    bool empty() const { return begin == end; }
-    // The state of the last point: one flip per x change.
-    bool last_state() const
-    {
-      bool s = first;
-      for(const std::uint32_t* c = begin; c != end; ++c)
-        s ^= (*c % 3 == 0);
-      return s;
-    }
     std::size_t inside_points(std::size_t nx) const
     {
       std::size_t inside = 0, from = 0;
       bool s = first;
-      for(const std::uint32_t* c = begin; c != end; ++c)
-        if(*c % 3 == 0)
-        {
-          const std::size_t i = *c / 3;
-          if(s)
-            inside += i + 1 - from;
-          s = !s;
-          from = i + 1;
-        }
+      for(const std::uint32_t* c = changes; c != changes_end; ++c)
+      {
+        if(s)
+          inside += *c + 1 - from;
+        s = !s;
+        from = *c + 1;
+      }
       return inside + (s ? nx - from : 0);
     }
+    bool last_state() const { return first ^ (std::size_t(changes_end - changes) % 2 == 1); }
   };
 
-  Row row_of(std::size_t k, std::size_t j) const
+  // Position of `j` in the sorted `rows`, or rows.size().
+  static std::size_t find_row(const std::vector<std::uint32_t>& rows, std::size_t j)
   {
-    const Plane_rows& p = m_planes[k];
-    return Row{p.codes.data() + p.begin[j], p.codes.data() + p.begin[j + 1], p.first[j] != 0};
+    const auto it = std::lower_bound(rows.begin(), rows.end(), std::uint32_t(j));
+    return it != rows.end() && *it == j ? std::size_t(it - rows.begin()) : rows.size();
   }
 
-  // The states along x line `line` as its first state and x changes.
-  void x_changes_of_line(std::size_t line, std::vector<std::uint32_t>& changes, std::uint8_t& first) const
+  Row_states states_of(std::size_t k, std::size_t j) const
   {
-    std::uint64_t mask = m_classifier.start_mask(line);
+    const Plane_changes& p = m_changes[k];
+    const std::size_t r = find_row(p.rows, j);
+    if(r == p.rows.size())
+      return Row_states{m_empty_state, nullptr, nullptr};
+    return Row_states{p.first[r] != 0, p.changes.data() + p.begin[r], p.changes.data() + p.begin[r + 1]};
+  }
+
+  // The codes of row j of plane k (an empty range for a row without vertex
+  // edges), and their position in the plane's codes.
+  struct Row_codes
+  {
+    const std::uint32_t* begin = nullptr;
+    const std::uint32_t* end = nullptr;
+    std::size_t offset = 0;
+    bool empty() const { return begin == end; }
+  };
+
+  Row_codes codes_of(std::size_t k, std::size_t j) const
+  {
+    const Plane_rows& p = m_planes[k];
+    const std::size_t r = find_row(p.rows, j);
+    if(r == p.rows.size())
+      return Row_codes();
+    return Row_codes{p.codes.data() + p.begin[r], p.codes.data() + p.begin[r + 1], p.begin[r]};
+  }
+
+  // The x changes of x line (j, k) (stored line `line`).
+  void x_changes_of_line(const Lattice_classifier_3::Stored_line& line, std::vector<std::uint32_t>& changes,
+                         std::uint8_t& first) const
+  {
+    std::uint64_t mask = line.start_mask;
     bool state = m_inside(mask);
     first = std::uint8_t(state);
-    const Lattice_classifier_3::Crossing_range crossings = m_classifier.crossings_on_line(0, line);
-    for(const Lattice_crossing* c = crossings.begin(); c != crossings.end();)
+    for(const Lattice_crossing* c = line.crossings.begin(); c != line.crossings.end();)
     {
       const std::uint32_t index = c->index; // on the edge (index - 1, index)
-      for(; c != crossings.end() && c->index == index; ++c)
+      for(; c != line.crossings.end() && c->index == index; ++c)
         mask ^= std::uint64_t(1) << c->mesh;
       const bool now = m_inside(mask);
       if(now != state)
@@ -341,88 +360,158 @@ private:
 
   void x_changes_of_plane(std::size_t k, Plane_changes& plane) const
   {
-    const std::size_t ny = m_n[1];
-    plane.begin.assign(ny + 1, 0);
-    plane.first.assign(ny, 0);
-    for(std::size_t j = 0; j < ny; ++j)
+    const Lattice_classifier_3::Stored_lines lines = m_classifier.stored_lines(0, k);
+    plane.rows.reserve(lines.size());
+    plane.first.reserve(lines.size());
+    for(std::size_t l = 0; l < lines.size(); ++l)
     {
-      x_changes_of_line(j + ny * k, plane.changes, plane.first[j]);
-      plane.begin[j + 1] = std::uint32_t(plane.changes.size());
+      const Lattice_classifier_3::Stored_line line = lines[l];
+      plane.rows.push_back(std::uint32_t(line.u));
+      plane.first.push_back(0);
+      x_changes_of_line(line, plane.changes, plane.first.back());
+      plane.begin.push_back(std::uint32_t(plane.changes.size()));
     }
   }
 
-  // Appends the indices i < nx where the states of two rows differ (each
-  // row given by its first state and x changes), increasing.
-  static void differences(bool a, const std::uint32_t* ca, const std::uint32_t* ea, bool b, const std::uint32_t* cb,
-                          const std::uint32_t* eb, std::size_t nx, std::vector<std::uint32_t>& out)
+  // Appends the indices i < nx where the states of two rows differ,
+  // increasing.
+  static void differences(Row_states a, Row_states b, std::size_t nx, std::vector<std::uint32_t>& out)
   {
     std::size_t i = 0;
     while(i < nx)
     {
       // Both states are constant on [i, next].
       std::size_t next = nx - 1;
-      if(ca != ea)
-        next = (std::min)(next, std::size_t(*ca));
-      if(cb != eb)
-        next = (std::min)(next, std::size_t(*cb));
-      if(a != b)
+      if(a.changes != a.changes_end)
+        next = (std::min)(next, std::size_t(*a.changes));
+      if(b.changes != b.changes_end)
+        next = (std::min)(next, std::size_t(*b.changes));
+      if(a.first != b.first)
         for(std::size_t x = i; x <= next; ++x)
           out.push_back(std::uint32_t(x));
-      if(ca != ea && *ca == next)
+      if(a.changes != a.changes_end && *a.changes == next)
       {
-        a = !a;
-        ++ca;
+        a.first = !a.first;
+        ++a.changes;
       }
-      if(cb != eb && *cb == next)
+      if(b.changes != b.changes_end && *b.changes == next)
       {
-        b = !b;
-        ++cb;
+        b.first = !b.first;
+        ++b.changes;
       }
       i = next + 1;
     }
   }
 
-  // `above` is the next plane's changes (null for the last plane).
-  void vertex_edges_of_plane(std::size_t k, const Plane_changes& here, const Plane_changes* above,
-                             Plane_rows& plane) const
+  // Calls f(j) for every j in [0, limit) of the union of the sorted lists,
+  // each shifted by its offset (-1 or 0), in increasing order, once.
+  template <typename F>
+  static void for_each_row_of_union(const std::array<const std::vector<std::uint32_t>*, 3>& lists,
+                                    const std::array<int, 3>& shift, std::size_t limit, const F& f)
   {
-    const std::size_t nx = m_n[0], ny = m_n[1];
-    plane.begin.assign(ny + 1, 0);
-    plane.first = here.first;
-    std::vector<std::uint32_t> y, z;
-    for(std::size_t j = 0; j < ny; ++j)
+    std::array<std::size_t, 3> at{{0, 0, 0}};
+    const std::size_t none = std::numeric_limits<std::size_t>::max();
+    for(;;)
     {
-      const std::uint32_t* x_first = here.changes.data() + here.begin[j];
-      const std::uint32_t* x_last = here.changes.data() + here.begin[j + 1];
+      std::size_t j = none;
+      for(int l = 0; l < 3; ++l)
+      {
+        if(lists[l] == nullptr)
+          continue;
+        // Skip the entries the shift moves below 0.
+        while(at[l] < lists[l]->size() && std::ptrdiff_t((*lists[l])[at[l]]) + shift[l] < 0)
+          ++at[l];
+        if(at[l] < lists[l]->size())
+          j = (std::min)(j, std::size_t(std::ptrdiff_t((*lists[l])[at[l]]) + shift[l]));
+      }
+      if(j == none || j >= limit)
+        return;
+      f(j);
+      for(int l = 0; l < 3; ++l)
+        if(lists[l] != nullptr && at[l] < lists[l]->size() &&
+           std::size_t(std::ptrdiff_t((*lists[l])[at[l]]) + shift[l]) == j)
+          ++at[l];
+    }
+  }
+
+  void vertex_edges_of_plane(std::size_t k, Plane_rows& plane) const
+  {
+    const std::size_t nx = m_n[0], ny = m_n[1], nz = m_n[2];
+    const bool has_above = k + 1 < nz;
+    std::vector<std::uint32_t> y, z;
+    // A row can have vertex edges only if it, the next row or the row above
+    // is listed: otherwise all three have the state of the empty mask.
+    const std::array<const std::vector<std::uint32_t>*, 3> lists{
+        {&m_changes[k].rows, &m_changes[k].rows, has_above ? &m_changes[k + 1].rows : nullptr}};
+    for_each_row_of_union(lists, {{0, -1, 0}}, ny, [&](std::size_t j) {
+      const Row_states here = states_of(k, j);
       y.clear();
       z.clear();
       if(j + 1 < ny)
-        differences(here.first[j] != 0, x_first, x_last, here.first[j + 1] != 0,
-                    here.changes.data() + here.begin[j + 1], here.changes.data() + here.begin[j + 2], nx, y);
-      if(above != nullptr)
-        differences(here.first[j] != 0, x_first, x_last, above->first[j] != 0,
-                    above->changes.data() + above->begin[j], above->changes.data() + above->begin[j + 1], nx, z);
+        differences(here, states_of(k, j + 1), nx, y);
+      if(has_above)
+        differences(here, states_of(k + 1, j), nx, z);
       // Merge the three increasing lists into codes 3 * i + axis.
+      const std::size_t before = plane.codes.size();
+      const std::uint32_t* x = here.changes;
       const std::uint32_t* yc = y.data();
       const std::uint32_t* zc = z.data();
-      const std::uint32_t* x = x_first;
       const std::uint32_t* y_end = y.data() + y.size();
       const std::uint32_t* z_end = z.data() + z.size();
-      while(x != x_last || yc != y_end || zc != z_end)
+      while(x != here.changes_end || yc != y_end || zc != z_end)
       {
         std::uint32_t i = std::numeric_limits<std::uint32_t>::max();
-        if(x != x_last) i = (std::min)(i, *x);
+        if(x != here.changes_end) i = (std::min)(i, *x);
         if(yc != y_end) i = (std::min)(i, *yc);
         if(zc != z_end) i = (std::min)(i, *zc);
-        if(x != x_last && *x == i) { plane.codes.push_back(3 * i); ++x; }
+        if(x != here.changes_end && *x == i) { plane.codes.push_back(3 * i); ++x; }
         if(yc != y_end && *yc == i) { plane.codes.push_back(3 * i + 1); ++yc; }
         if(zc != z_end && *zc == i) { plane.codes.push_back(3 * i + 2); ++zc; }
       }
+      if(plane.codes.size() == before)
+        return;
       if(plane.codes.size() >= std::numeric_limits<std::uint32_t>::max())
         throw Lattice_too_large_error("more than 2^32 output vertices in one lattice plane");
-      plane.begin[j + 1] = std::uint32_t(plane.codes.size());
+      plane.rows.push_back(std::uint32_t(j));
+      plane.begin.push_back(std::uint32_t(plane.codes.size()));
+    });
+  }
+
+  // Points on the lattice boundary inside the result: whole rows on the
+  // boundary planes and the rows j = 0 and ny - 1, the two ends of the
+  // other rows.  Unlisted rows have the empty mask's state: counted in bulk.
+  std::size_t boundary_points_inside() const
+  {
+    const std::size_t nx = m_n[0], ny = m_n[1], nz = m_n[2];
+    const std::size_t ends = nx > 1 ? 2 : 1;
+    std::size_t inside = 0;
+    for(std::size_t k = 0; k < nz; ++k)
+    {
+      const bool boundary_plane = k == 0 || k + 1 == nz;
+      const Plane_changes& p = m_changes[k];
+      std::size_t listed_whole = 0, listed_ends = 0;
+      for(std::size_t r = 0; r < p.rows.size(); ++r)
+      {
+        const Row_states row{p.first[r] != 0, p.changes.data() + p.begin[r], p.changes.data() + p.begin[r + 1]};
+        const std::size_t j = p.rows[r];
+        if(boundary_plane || j == 0 || j + 1 == ny)
+        {
+          inside += row.inside_points(nx);
+          ++listed_whole;
+        }
+        else
+        {
+          inside += std::size_t(row.first) + (nx > 1 ? std::size_t(row.last_state()) : 0);
+          ++listed_ends;
+        }
+      }
+      if(m_empty_state)
+      {
+        const std::size_t whole = boundary_plane ? ny : (ny > 1 ? 2 : 1);
+        inside += (whole - listed_whole) * nx + (ny - whole - listed_ends) * ends;
+      }
     }
-    plane.codes.shrink_to_fit();
+    return inside;
   }
 
   // The mask along an x line, walked with increasing i.
@@ -453,19 +542,18 @@ private:
   void vertices_of_plane(std::size_t k, std::vector<std::array<double, 3>>& points)
   {
     const std::size_t ny = m_n[1];
+    const Plane_rows& p = m_planes[k];
     std::size_t id = m_vertex_offset[k];
-    for(std::size_t j = 0; j < ny; ++j)
+    for(std::size_t r = 0; r < p.rows.size(); ++r)
     {
-      const Row row = row_of(k, j);
-      if(row.empty())
-        continue;
+      const std::size_t j = p.rows[r];
       Line_mask here(m_classifier, j + ny * k);
       // The masks of the next row and of the row above, made when needed.
       std::optional<Line_mask> next_row, row_above;
-      for(const std::uint32_t* c = row.begin; c != row.end; ++c, ++id)
+      for(std::size_t c = p.begin[r]; c < p.begin[r + 1]; ++c, ++id)
       {
-        const std::size_t i = *c / 3;
-        const int axis = int(*c % 3);
+        const std::size_t i = p.codes[c] / 3;
+        const int axis = int(p.codes[c] % 3);
         const std::uint64_t low_mask = here.at(i);
         const bool from_low = m_inside(low_mask);
         std::uint64_t inside_mask = low_mask;
@@ -473,7 +561,6 @@ private:
         {
           if(axis == 0)
           {
-            inside_mask = low_mask;
             for(const Lattice_crossing& x : m_classifier.crossings_on_edge(0, i, j, k))
               inside_mask ^= std::uint64_t(1) << x.mesh;
           }
@@ -517,29 +604,29 @@ private:
   // for every cube of the layers [first, last) whose corners do not all have
   // the same state, layer by layer, then by cube (i fastest).  `code` has
   // bit c set iff corner c is inside; `vertex_of(e)` is the output vertex on
-  // cube edge e.  A row of cubes whose bounding point rows have no vertex
-  // edge is skipped in O(1); in the others only the runs between x changes
-  // are looked at, so the work grows with the surface.
+  // cube edge e.  Only the rows of cubes next to a row with vertex edges are
+  // looked at, and in them only the runs between x changes, so the work
+  // grows with the surface.
   template <typename F>
   void for_each_crossed_cube(std::size_t first, std::size_t last, const F& f) const
   {
     const std::size_t nx = m_n[0], ny = m_n[1];
     for(std::size_t k = first; k < last; ++k)
-      for(std::size_t j = 0; j + 1 < ny; ++j)
-      {
+    {
+      // A cube row whose first three point rows have no vertex edge: no x
+      // change, and the same state as the next row and the row above, so
+      // all four rows are uniform and equal.
+      const std::array<const std::vector<std::uint32_t>*, 3> lists{
+          {&m_planes[k].rows, &m_planes[k].rows, &m_planes[k + 1].rows}};
+      for_each_row_of_union(lists, {{0, -1, 0}}, ny - 1, [&](std::size_t j) {
         // The point rows of the cube row: corner c is on row (c >> 1) & 3
         // (its y and z offsets), at x offset c & 1.
-        const std::array<Row, 4> rows{{row_of(k, j), row_of(k, j + 1), row_of(k + 1, j), row_of(k + 1, j + 1)}};
-        // Empty lists of the first three rows: no x change, and the same
-        // state as the next row and the row above: all four rows uniform.
-        if(rows[0].empty() && rows[1].empty() && rows[2].empty())
-          continue;
-        const std::array<std::size_t, 4> row_offset{{m_vertex_offset[k] + std::size_t(rows[0].begin - m_planes[k].codes.data()),
-                                                     m_vertex_offset[k] + std::size_t(rows[1].begin - m_planes[k].codes.data()),
-                                                     m_vertex_offset[k + 1] + std::size_t(rows[2].begin - m_planes[k + 1].codes.data()),
-                                                     m_vertex_offset[k + 1] + std::size_t(rows[3].begin - m_planes[k + 1].codes.data())}};
-        // Per row: the next x change (its index along x, or none), the
-        // current state, and the cursor of vertex_of().
+        const std::array<Row_codes, 4> rows{{codes_of(k, j), codes_of(k, j + 1), codes_of(k + 1, j),
+                                             codes_of(k + 1, j + 1)}};
+        const std::array<std::size_t, 4> plane_offset{
+            {m_vertex_offset[k], m_vertex_offset[k], m_vertex_offset[k + 1], m_vertex_offset[k + 1]}};
+        // Per row: the next x change (a code 3 i), the current state, and
+        // the cursor of vertex_of().
         std::array<const std::uint32_t*, 4> x_next, cursor;
         std::array<bool, 4> state;
         auto next_x_change = [&](int r, const std::uint32_t* c) {
@@ -551,7 +638,8 @@ private:
         {
           x_next[r] = next_x_change(r, rows[r].begin);
           cursor[r] = rows[r].begin;
-          state[r] = rows[r].first;
+          // A row without codes is uniform: its first state is its state.
+          state[r] = states_of(k + std::size_t(r >> 1), j + std::size_t(r & 1)).first;
         }
         std::size_t cube = 0; // the vertices of this cube: vertex_of reads it
         const auto vertex_of = [&](int e) {
@@ -569,7 +657,7 @@ private:
           while(*c < code)
             ++c;
           CGAL_assertion(c != rows[r].end && *c == code);
-          return row_offset[r] + std::size_t(c - rows[r].begin);
+          return plane_offset[r] + rows[r].offset + std::size_t(c - rows[r].begin);
         };
         auto code_of = [](const std::array<bool, 4>& low, const std::array<bool, 4>& high) {
           unsigned code = 0;
@@ -606,7 +694,8 @@ private:
           state = after;
           i = e + 1;
         }
-      }
+      });
+    }
   }
 
   // The cubes of layers [first, last), the polygons whose normals disagree
@@ -629,11 +718,13 @@ private:
   const Regular_lattice_3& m_lattice;
   Expression_evaluator m_inside;
   std::array<std::size_t, 3> m_n;
+  std::vector<Plane_changes> m_changes;
   std::vector<Plane_rows> m_planes;
   std::vector<std::size_t> m_vertex_offset;
   Feature_settings m_features;
   const std::vector<Triangle_tangent>& m_tangents;
   std::vector<Vector_3d> m_normals; // outward normal of each edge vertex (features only)
+  bool m_empty_state;               // the state of a point inside no mesh
 };
 
 // The triangles of the input meshes, each read through its map of the
@@ -723,7 +814,7 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
       features.enabled ? Marching_cubes_csg::triangle_tangents(triangles)
                        : std::vector<Marching_cubes_csg::Triangle_tangent>();
   typedef Marching_cubes_csg_builder<ConcurrencyTag> Builder;
-  const std::size_t reserved = lattice.number_of_points(1) * lattice.number_of_points(2) * Builder::bytes_per_row();
+  const std::size_t reserved = lattice.number_of_points(2) * Builder::bytes_per_plane();
   const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
       std::move(triangles), number_of_meshes, lattice, max_memory, reserved, progress.part(0, 0.6));
 #if defined(CGAL_BOOLEAN_ISOSURFACING_3_CHECK_CONSISTENCY) || !defined(NDEBUG)
