@@ -61,8 +61,6 @@ typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef Epick::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
 
-using biso_tools::Progress_bar;
-
 // `expression & X`, X a new last variable: the result clipped to the solid X.
 BI::Boolean_expression and_with_new_variable(const BI::Boolean_expression& expression)
 {
@@ -182,22 +180,21 @@ Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& ex
   Mesh output;
   auto crease = output.add_property_map<Mesh::Edge_index, bool>("e:csg_crease", false).first;
   auto corner = output.add_property_map<Mesh::Vertex_index, bool>("v:csg_corner", false).first;
-  const Progress_bar progress(options.quiet);
   BI::Marching_cubes_csg_statistics statistics;
   const auto np =
       BI::parameters::sharp_features(
           options.features,
-          BI::parameters::feature_angle(
-              options.feature_angle,
-              BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::progress(progress))))
+          BI::parameters::feature_angle(options.feature_angle,
+                                        BI::parameters::max_memory_bytes(max_memory_bytes(options))))
+          .callback(biso_tools::progress_callback("csg", "computing the CSG", options.quiet))
           .edge_is_constrained_map(crease)
           .vertex_is_constrained_map(corner);
 #ifdef CGAL_LINKED_WITH_TBB
   if(options.parallel)
-    statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(meshes, expression, lattice, output, np);
+    statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(lattice, meshes, expression, output, np);
   else
 #endif
-    statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(meshes, expression, lattice, output, np);
+    statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(lattice, meshes, expression, output, np);
   // A fresh Surface_mesh: vertex i is soup point i.
   std::vector<std::array<std::size_t, 2>> edges;
   std::vector<std::size_t> corners;
