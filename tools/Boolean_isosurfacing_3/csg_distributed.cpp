@@ -13,11 +13,10 @@
 #include <CGAL/Boolean_isosurfacing_3/MPI/distributed_marching_cubes_csg.h>
 
 #include "csg_options.h"
+#include "kernels.h"
 #include "mpi_driver.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <mpi.h>
 
@@ -31,8 +30,7 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using biso_tools::Mesh;
 using biso_tools::Usage_error;
 using biso_tools::mpi::Ranks;
 using csg_tool::Options;
