@@ -71,7 +71,7 @@ void BM_ours_union(benchmark::State& state)
   for(auto _ : state)
   {
     Mesh out;
-    BI::marching_cubes_csg<Tag>(setup.meshes, BI::Boolean_expression::union_of(2), setup.lattice, out);
+    BI::marching_cubes_csg<Tag>(setup.lattice, setup.meshes, BI::Boolean_expression::union_of(2), out);
     triangles = out.number_of_faces();
     state.PauseTiming();
     volume = BI::surveyor_volume(out);
@@ -154,7 +154,7 @@ void BM_ours_classification_per_point(benchmark::State& state)
     std::vector<Point> points;
     std::vector<std::array<std::size_t, 3>> triangles;
     const auto statistics =
-        BI::marching_cubes_csg(one, BI::Boolean_expression::single(0, 1), lattice, points, triangles);
+        BI::marching_cubes_csg(lattice, one, BI::Boolean_expression::single(0, 1), points, triangles);
     seconds += statistics.seconds_classification;
   }
   state.counters["ns_per_point"] =
