@@ -232,8 +232,6 @@ void marching_cubes_csg_slab_range(const Regular_lattice_3& lattice, const Trian
   }
   range.statistics.number_of_vertices = range.points.size();
   range.statistics.number_of_faces = range.triangles.size();
-  range.statistics.output_vertices = range.statistics.number_of_vertices; // the deprecated names
-  range.statistics.output_triangles = range.statistics.number_of_faces;
 }
 
 } // namespace Boolean_isosurfacing
