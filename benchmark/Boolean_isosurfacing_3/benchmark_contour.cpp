@@ -170,7 +170,7 @@ std::pair<double, double> error(const Dataset& d, const Mesh& mesh)
   return {worst / d.spacing, sum / double(d.points.size()) / d.spacing};
 }
 
-Mesh run_contour(const Dataset& d, double cells, BI::Contouring_report* report,
+Mesh run_contour(const Dataset& d, double cells, BI::Contouring_statistics* report,
                  BI::Tangent_plane_signed_distance_3<K>::Timings* timings)
 {
   std::vector<std::size_t> indices(d.points.size());
@@ -180,10 +180,10 @@ Mesh run_contour(const Dataset& d, double cells, BI::Contouring_report* report,
     indices, CGAL::parameters::point_map(CGAL::make_property_map(d.points)).normal_map(CGAL::make_property_map(d.normals)));
   std::vector<Point_3> points;
   std::vector<std::array<std::size_t, 3>> triangles;
-  if(cells > 0)
-    *report = BI::contour_signed_distance(field, points, triangles, BI::parameters::cells_along_longest_side(cells));
-  else
-    *report = BI::contour_signed_distance(field, points, triangles);
+  const BI::Regular_lattice_3 lattice = cells > 0
+      ? BI::contouring_lattice(field, BI::parameters::cells_along_longest_side(cells))
+      : BI::contouring_lattice(field);
+  *report = BI::contour_signed_distance(lattice, field, points, triangles);
   *timings = field.timings();
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
@@ -193,7 +193,7 @@ Mesh run_contour(const Dataset& d, double cells, BI::Contouring_report* report,
 void BM_contour(benchmark::State& state, const Dataset* d, double cells)
 {
   Mesh mesh;
-  BI::Contouring_report report;
+  BI::Contouring_statistics report;
   BI::Tangent_plane_signed_distance_3<K>::Timings timings;
   for(auto _ : state)
     mesh = run_contour(*d, cells, &report, &timings);
@@ -206,8 +206,8 @@ void BM_contour(benchmark::State& state, const Dataset* d, double cells)
   state.counters["t_knn"] = timings.neighbors;
   state.counters["t_pca"] = timings.planes;
   state.counters["t_orient"] = timings.orientation;
-  state.counters["t_field"] = report.field_seconds;
-  state.counters["t_contour"] = report.contouring_seconds;
+  state.counters["t_field"] = report.seconds_field;
+  state.counters["t_contour"] = report.seconds_contouring;
   state.counters["closed"] = CGAL::is_closed(mesh) ? 1 : 0;
 }
 

@@ -39,6 +39,8 @@
 #include <openvdb/tools/VolumeToMesh.h>
 #endif
 
+#include "test_util.h"
+
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -52,10 +54,7 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef Epick::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
+using namespace CGAL::Boolean_isosurfacing::test::kernels;
 
 struct Setup
 {
@@ -73,7 +72,7 @@ void BM_ours_union(benchmark::State& state)
   for(auto _ : state)
   {
     Mesh out;
-    BI::marching_cubes_csg<Tag>(setup.meshes, BI::Boolean_expression::union_of(2), setup.lattice, out);
+    BI::marching_cubes_csg<Tag>(setup.lattice, setup.meshes, BI::Boolean_expression::union_of(2), out);
     triangles = out.number_of_faces();
     state.PauseTiming();
     volume = BI::surveyor_volume(out);
@@ -95,7 +94,6 @@ void BM_corefine_union_epick(benchmark::State& state)
 
 void BM_nef_union_epeck(benchmark::State& state)
 {
-  typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
   for(auto _ : state)
   {
     Exact_mesh a, b;

@@ -107,7 +107,7 @@ static Measure measure(const std::vector<Mesh>& meshes, const std::string& expre
     points.clear();
     triangles.clear();
     const auto start = std::chrono::steady_clock::now();
-    s = BI::marching_cubes_csg(meshes, BI::Boolean_expression::parse(expression), lattice, points, triangles,
+    s = BI::marching_cubes_csg(lattice, meshes, BI::Boolean_expression::parse(expression), points, triangles,
                                BI::parameters::sharp_features(features));
     m.seconds = (std::min)(m.seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }

@@ -53,13 +53,9 @@ namespace {
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace MC = CGAL::Boolean_isosurfacing::internal::Marching_cubes_csg;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef Epick::Point_3 Point;
+using namespace CGAL::Boolean_isosurfacing::test::kernels;
 typedef Epick::Vector_3 Vector;
 typedef Epick::Segment_3 Segment;
-typedef CGAL::Surface_mesh<Point> Mesh;
-typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
 
 const double pi = 3.14159265358979323846;
 

@@ -37,6 +37,8 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -76,17 +78,6 @@ Mesh make_sphere(const Point& center, double radius, unsigned subdivisions)
 {
   Mesh mesh;
   BI::make_icosphere(mesh, center, radius, subdivisions);
-  return mesh;
-}
-
-Mesh make_box(const Point& low, const Point& high)
-{
-  Mesh mesh;
-  CGAL::make_hexahedron(Point(low.x(), low.y(), low.z()), Point(high.x(), low.y(), low.z()),
-                        Point(high.x(), high.y(), low.z()), Point(low.x(), high.y(), low.z()),
-                        Point(low.x(), high.y(), high.z()), Point(low.x(), low.y(), high.z()),
-                        Point(high.x(), low.y(), high.z()), Point(high.x(), high.y(), high.z()), mesh);
-  PMP::triangulate_faces(mesh);
   return mesh;
 }
 
@@ -441,7 +432,7 @@ TEST(McCsgDegenerate, BoxOnLatticePlanesFollowsThePerturbationConvention)
       {Point(2, 2, 2), Point(5, 5, 5)}, {Point(2, 1.5, 2), Point(5.5, 4, 3)}, {Point(0.5, 1, 3), Point(7, 6.25, 6)}};
   for(const auto& b : boxes)
   {
-    const Mesh box = make_box(b.first, b.second);
+    const Mesh box = BI::test::make_box<Mesh>(b.first, b.second);
     const std::vector<const Mesh*> meshes = {&box};
     const BI::Lattice_classifier_3 classifier = BI::Lattice_classifier_3::classify(refs(meshes), lattice);
     EXPECT_EQ(classifier.number_of_inconsistent_edges(), 0u);
@@ -583,8 +574,8 @@ TEST(McCsgDegenerate, IdenticalMeshes)
 
 TEST(McCsgDegenerate, BoxesTouchingAlongAFace)
 {
-  const Mesh a = make_box(Point(1, 1, 1), Point(3, 3, 3));
-  const Mesh b = make_box(Point(3, 1, 1), Point(5, 3, 3));
+  const Mesh a = BI::test::make_box<Mesh>(Point(1, 1, 1), Point(3, 3, 3));
+  const Mesh b = BI::test::make_box<Mesh>(Point(3, 1, 1), Point(5, 3, 3));
   for(double offset : {0.0, 0.1})
   {
     SCOPED_TRACE(offset);
@@ -596,7 +587,7 @@ TEST(McCsgDegenerate, BoxesTouchingAlongAFace)
     EXPECT_NEAR(volume, 16.0, 16 * 0.25);
     // The union is exactly what the merged box gives: same states, and the
     // crossings of axis-aligned faces are exact.
-    const Mesh merged = make_box(Point(1, 1, 1), Point(5, 3, 3));
+    const Mesh merged = BI::test::make_box<Mesh>(Point(1, 1, 1), Point(5, 3, 3));
     EXPECT_TRUE(same_soup(u, run_csg({&merged}, BI::Boolean_expression::single(0, 1), lattice)));
     // The common face is not in the union.
     for(const Triangle& t : u.triangles)
@@ -1113,8 +1104,8 @@ TEST(McCsgApi, ComplementIsReportedAsOpenAtTheLatticeBoundary)
 // interval of the result is at least 0.02 > 2 spacings long.
 TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
 {
-  const Mesh outer = make_box(Point(0, 0, 0), Point(1, 1, 1));
-  const Mesh inner = make_box(Point(0.02, 0.02, 0.02), Point(0.98, 0.98, 0.98));
+  const Mesh outer = BI::test::make_box<Mesh>(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh inner = BI::test::make_box<Mesh>(Point(0.02, 0.02, 0.02), Point(0.98, 0.98, 0.98));
   const CGAL::Bbox_3 box(0, 0, 0, 1, 1, 1);
   const Soup coarse = run_csg({&outer, &inner}, BI::Boolean_expression::difference(),
                               BI::Regular_lattice_3::enclosing(box, 1.0 / 16));
@@ -1142,7 +1133,7 @@ TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
 
   // Two overlapping boxes: nothing thin, and the line volume is exact along
   // x-lines (box faces between lattice planes).
-  const Mesh moved = make_box(Point(0.5, 0.25, 0.25), Point(1.5, 0.75, 0.75));
+  const Mesh moved = BI::test::make_box<Mesh>(Point(0.5, 0.25, 0.25), Point(1.5, 0.75, 0.75));
   const Soup both = run_csg({&outer, &moved}, BI::Boolean_expression::union_of(2),
                             BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(0, 0, 0, 1.5, 1, 1), 1.0 / 16));
   EXPECT_EQ(both.statistics.thin_result_intervals, 0u);

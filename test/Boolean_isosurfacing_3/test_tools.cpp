@@ -16,6 +16,8 @@
 #include <cstdlib>
 #include <fcntl.h>
 #include <fstream>
+#include <poll.h>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -1048,6 +1050,93 @@ TEST_F(Tool, ProgressLinesNameTheStageAndAreSilencedByQuiet)
   EXPECT_TRUE(run_tool(BISO_TBISO_TOOL, "--cells 8 --field sphere:0,0,0,0.5 --quiet").err.empty());
   const Result c = run_tool(BISO_CONTOUR_TOOL, std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn");
   EXPECT_NE(c.err.find("contour: contoured "), std::string::npos) << c.err;
+}
+
+// Runs `tool arguments...` with stderr on a pseudo-terminal (stdin and stdout
+// on /dev/null) and the progress delay at 0, and returns what it printed on
+// the terminal.
+std::string run_on_a_terminal(const char* tool, const std::vector<std::string>& arguments)
+{
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  if(master < 0 || grantpt(master) != 0 || unlockpt(master) != 0)
+    return "no pseudo-terminal";
+  const std::string slave_name = ptsname(master);
+  std::vector<char*> argv{const_cast<char*>(tool)};
+  for(const std::string& a : arguments)
+    argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if(pid == 0)
+  {
+    const int slave = open(slave_name.c_str(), O_RDWR);
+    const int null = open("/dev/null", O_RDWR);
+    if(slave < 0 || null < 0) _exit(100);
+    dup2(null, 0);
+    dup2(null, 1);
+    dup2(slave, 2);
+    setenv("BISO_PROGRESS_DELAY", "0", 1);
+    execv(tool, argv.data());
+    _exit(101);
+  }
+  // Read while it runs (a pseudo-terminal holds a few kB), until it exits.
+  std::string text;
+  char buffer[4096];
+  int status = 0;
+  bool exited = false;
+  for(int i = 0; i < 1200; ++i) // 60 s at most
+  {
+    pollfd p{master, POLLIN, 0};
+    while(poll(&p, 1, 0) > 0 && (p.revents & POLLIN))
+    {
+      const ssize_t n = read(master, buffer, sizeof buffer);
+      if(n <= 0)
+        break;
+      text.append(buffer, std::size_t(n));
+    }
+    if(exited)
+      break;
+    exited = waitpid(pid, &status, WNOHANG) == pid;
+    if(!exited)
+      usleep(50000);
+  }
+  if(!exited)
+  {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  close(master);
+  return text;
+}
+
+// On a terminal, the CSG's progress comes live through the library's
+// `callback`: a line "csg: computing the CSG [###   ]  N%" redrawn in place
+// (\r), erased (\r, spaces, \r) before the stage lines; --quiet silences it.
+TEST_F(Tool, ProgressLineIsLiveOnATerminalAndErasedBeforeTheStageLines)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(1, 1, 1, 2));
+  const std::string text = run_on_a_terminal(BISO_CSG_TOOL, {a, b, "--op", "union", "--cells", "40"});
+  const std::size_t first = text.find("csg: computing the CSG [");
+  ASSERT_NE(first, std::string::npos) << text;
+  const std::size_t stage = text.find("csg: classified ");
+  ASSERT_NE(stage, std::string::npos) << text;
+  EXPECT_LT(first, stage) << text;
+  // More than one fraction drawn, in place, each with its percentage.
+  const std::string progress = text.substr(first, stage - first);
+  const std::regex drawn("\r?csg: computing the CSG \\[#* *\\] +[0-9]+%");
+  const auto lines = std::distance(std::sregex_iterator(progress.begin(), progress.end(), drawn), std::sregex_iterator());
+  EXPECT_GE(lines, 2) << progress;
+  // Erased before the stage line: "\r", spaces, "\r" just before it.
+  EXPECT_TRUE(std::regex_search(progress, std::regex("\r +\r$"))) << progress;
+  // Nothing of it under --quiet.
+  const std::string quiet = run_on_a_terminal(BISO_CSG_TOOL, {a, b, "--op", "union", "--cells", "40", "--quiet"});
+  EXPECT_EQ(quiet.find('%'), std::string::npos) << quiet;
+  EXPECT_EQ(quiet.find("csg: "), std::string::npos) << quiet;
+  // The contouring and TBISO show theirs too.
+  const std::string c =
+      run_on_a_terminal(BISO_CONTOUR_TOOL, {std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn"});
+  EXPECT_NE(c.find("contour: contouring ["), std::string::npos) << c;
+  const std::string t = run_on_a_terminal(BISO_TBISO_TOOL, {"--cells", "24", "--field", "sphere:0,0,0,0.5"});
+  EXPECT_NE(t.find("tbiso: extracting the surface ["), std::string::npos) << t;
 }
 
 TEST_F(Tool, SequentialAndThreadLimitGiveByteIdenticalFiles)

@@ -63,8 +63,6 @@ typedef CGAL::Surface_mesh<Point> Mesh;
 // structure is built on the way (it was most of the process's time).
 typedef BI::Triangle_soup_3 Soup;
 
-using biso_tools::Progress_bar;
-
 // `expression & X`, X a new last variable: the result clipped to the solid X.
 BI::Boolean_expression and_with_new_variable(const BI::Boolean_expression& expression)
 {
@@ -203,15 +201,13 @@ Result run_csg(const std::vector<Soup>& meshes, const BI::Boolean_expression& ex
            options.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells, margin_cells)
                              : BI::Regular_lattice_3::enclosing(box, options.spacing, margin_cells),
            BI::Crease_network()};
-  const Progress_bar progress(options.quiet);
   BI::Marching_cubes_csg_features features;
   const auto np = BI::parameters::sharp_features(
       options.features,
       BI::parameters::feature_angle(
           options.feature_angle,
-          BI::parameters::max_memory_bytes(
-              max_memory_bytes(options),
-              BI::parameters::sharp_feature_output(&features, BI::parameters::progress(progress)))));
+          BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::sharp_feature_output(&features))))
+      .callback(biso_tools::progress_callback("csg", "computing the CSG", options.quiet));
 #ifdef CGAL_LINKED_WITH_TBB
   if(options.parallel)
     r.statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(r.lattice, meshes, expression, r.soup.points,

@@ -264,39 +264,6 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
   return statistics;
 }
 
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
- * \deprecated The former argument order: calls
- * `marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, points, triangles, np)`,
- * whose outputs are cleared first.
- */
-template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange, typename PointRange,
-          typename TriangleRange, typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value>>
-Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes, const Boolean_expression& expression,
-                                                 const Regular_lattice_3& lattice, PointRange& points,
-                                                 TriangleRange& triangles,
-                                                 const NamedParameters& np = parameters::default_values())
-{
-  return marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, points, triangles, np);
-}
-
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
- * \deprecated The former argument order: calls
- * `marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, output, np)`,
- * whose output is cleared first.
- */
-template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange, typename MutableFaceGraph,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<internal::Is_named_function_parameters<NamedParameters>::value>>
-Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes, const Boolean_expression& expression,
-                                                 const Regular_lattice_3& lattice, MutableFaceGraph& output,
-                                                 const NamedParameters& np = parameters::default_values())
-{
-  return marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, output, np);
-}
-
 } // namespace Boolean_isosurfacing
 } // namespace CGAL
 

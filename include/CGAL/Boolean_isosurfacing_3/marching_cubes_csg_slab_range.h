@@ -108,9 +108,9 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  * the output of `marching_cubes_csg()` with `sharp_features(false)`
  * (sharp features are not available on slab ranges).
  *
+ * \param lattice the whole lattice
  * \param meshes the closed triangle meshes (the same for every range)
  * \param expression a Boolean expression with `meshes.size()` variables
- * \param lattice the whole lattice
  * \param first_layer, last_layer the cube layers of the range
  * \param range the output (overwritten)
  * \param np an optional sequence of named parameters among the ones listed below
@@ -132,8 +132,8 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolean_expression& expression,
-                                   const Regular_lattice_3& lattice, std::size_t first_layer, std::size_t last_layer,
+void marching_cubes_csg_slab_range(const Regular_lattice_3& lattice, const TriangleMeshRange& meshes,
+                                   const Boolean_expression& expression, std::size_t first_layer, std::size_t last_layer,
                                    Marching_cubes_csg_slab_range& range,
                                    const NamedParameters& np = parameters::default_values())
 {
@@ -214,8 +214,6 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   }
   range.statistics.number_of_vertices = range.points.size();
   range.statistics.number_of_faces = range.triangles.size();
-  range.statistics.output_vertices = range.statistics.number_of_vertices; // the deprecated names
-  range.statistics.output_triangles = range.statistics.number_of_faces;
 }
 
 } // namespace Boolean_isosurfacing

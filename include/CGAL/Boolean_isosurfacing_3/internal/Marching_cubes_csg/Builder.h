@@ -760,9 +760,6 @@ inline void add_csg_warnings(Marching_cubes_csg_statistics& statistics)
   for(const Marching_cubes_csg_component_report& c : statistics.under_resolved_components)
     statistics.warnings.push_back("component " + std::to_string(c.component) + " of mesh #" +
                                   std::to_string(c.mesh) + " is not resolved by the lattice");
-  // The deprecated names.
-  statistics.output_vertices = statistics.number_of_vertices;
-  statistics.output_triangles = statistics.number_of_faces;
 }
 
 // The named parameters `sharp_features` (default true) and `feature_angle`
