@@ -917,7 +917,7 @@ TEST(McCsgParallel, IdenticalToSequential)
 TEST(McCsgSparse, HugeLatticeAroundASmallBoxEqualsASmallLattice)
 {
   const double r = 1.0 / 1024;
-  const Mesh box = make_box(Point(1.5 + 0.31 * r, 1.5 + 0.27 * r, 1.5 + 0.45 * r),
+  const Mesh box = BI::test::make_box<Mesh>(Point(1.5 + 0.31 * r, 1.5 + 0.27 * r, 1.5 + 0.45 * r),
                             Point(1.5 + 4.63 * r, 1.5 + 3.72 * r, 1.5 + 5.18 * r));
   const std::vector<const Mesh*> meshes = {&box};
   const BI::Boolean_expression a = BI::Boolean_expression::single(0, 1);
@@ -945,7 +945,7 @@ TEST(McCsgSparse, HugeLatticeAroundASmallBoxEqualsASmallLattice)
 TEST(McCsgSparse, EqualsADenseReferenceMarchingCubes)
 {
   const Mesh a = make_sphere(Point(0, 0, 0), 1.0, 3);
-  const Mesh b = make_box(Point(0.2, -0.4, -0.3), Point(1.4, 0.5, 0.6));
+  const Mesh b = BI::test::make_box<Mesh>(Point(0.2, -0.4, -0.3), Point(1.4, 0.5, 0.6));
   const std::vector<const Mesh*> meshes = {&a, &b};
   // Cuts the sphere at x = -0.8 (a lattice narrower than the inputs).
   const BI::Regular_lattice_3 lattice({{-0.8, -1.3, -1.25}}, 0.0731, {{33, 37, 36}});
@@ -999,7 +999,7 @@ TEST(McCsgSparse, EqualsADenseReferenceMarchingCubes)
 // of a crossing's index), with the axis and the limit.
 TEST(McCsgSparse, AxisOfTwoToThe26PointsIsRefused)
 {
-  const Mesh box = make_box(Point(0.1, 0.1, 0.1), Point(0.2, 0.2, 0.2));
+  const Mesh box = BI::test::make_box<Mesh>(Point(0.1, 0.1, 0.1), Point(0.2, 0.2, 0.2));
   const BI::Regular_lattice_3 lattice({{0, 0, 0}}, 1.0 / (1u << 26), {{std::size_t(1) << 26, 4, 4}});
   try
   {

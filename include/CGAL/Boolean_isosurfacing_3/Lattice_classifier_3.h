@@ -226,6 +226,19 @@ public:
     result.template run<ConcurrencyTag>(triangles, max_memory_bytes, reserved_bytes, progress);
     return result;
   }
+  // Frees the crossings and the stored lines (marching_cubes_csg() needs
+  // them no more once its vertices are placed): the classifier then holds
+  // no line, and only lattice() and number_of_meshes() remain meaningful.
+  void release_crossings()
+  {
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      std::vector<Crossing>().swap(m_crossings[axis]);
+      std::vector<Line_entry>(1, Line_entry{0, 0}).swap(m_lines[axis]);
+      std::vector<std::size_t>(m_row_begin[axis].size(), 0).swap(m_row_begin[axis]);
+    }
+    std::vector<std::uint64_t>().swap(m_start_masks);
+  }
   /// \endcond
 
   /// \name Access
@@ -590,7 +603,10 @@ private:
                                            (q[2][u] - q[0][u]) * (q[1][v] - q[0][v]));
         double perimeter = 0;
         for(int e = 0; e < 3; ++e)
-          perimeter += std::hypot(q[(e + 1) % 3][u] - q[e][u], q[(e + 1) % 3][v] - q[e][v]);
+        {
+          const double du = q[(e + 1) % 3][u] - q[e][u], dv = q[(e + 1) % 3][v] - q[e][v];
+          perimeter += std::sqrt(du * du + dv * dv);
+        }
         const double bound = area / cell_area + perimeter / (2 * m_lattice.spacing()) + 1;
         candidates[axis] += std::size_t((std::min)(double(b.size()), bound));
         binned[axis] += b.v1 - b.v0;

@@ -137,31 +137,37 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
 {
   typedef typename PointRange::value_type Point;
   typedef typename TriangleRange::value_type Triangle;
-  internal::Csg_soup soup;
   const auto start = std::chrono::steady_clock::now();
-  Marching_cubes_csg_statistics statistics =
-      internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, soup, np);
-  points.clear();
-  triangles.clear();
-  if constexpr(std::is_same<PointRange, std::vector<std::array<double, 3>>>::value)
-    points.swap(soup.points); // the package's own soup type: no copy
+  internal::Csg_features features;
+  Marching_cubes_csg_statistics statistics;
+  if constexpr(std::is_same<PointRange, std::vector<std::array<double, 3>>>::value &&
+               internal::Is_index_triple_vector<TriangleRange>::value)
+  {
+    // The package's own soup types: written in place, no copy.
+    statistics = internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, points, triangles,
+                                                                  features, np);
+  }
   else
   {
-    for(const std::array<double, 3>& p : soup.points)
+    std::vector<std::array<double, 3>> soup_points;
+    std::vector<std::array<std::size_t, 3>> soup_triangles;
+    statistics = internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, soup_points,
+                                                                  soup_triangles, features, np);
+    points.clear();
+    triangles.clear();
+    for(const std::array<double, 3>& p : soup_points)
       points.push_back(internal::make_output_point<Point>(p));
-    std::vector<std::array<double, 3>>().swap(soup.points);
+    std::vector<std::array<double, 3>>().swap(soup_points);
+    for(const std::array<std::size_t, 3>& t : soup_triangles)
+      triangles.push_back(internal::make_output_triangle<Triangle>(t));
   }
-  if constexpr(std::is_same<TriangleRange, std::vector<std::array<std::uint32_t, 3>>>::value)
-    triangles.reserve(soup.triangles.size());
-  for(const std::array<std::size_t, 3>& t : soup.triangles)
-    triangles.push_back(internal::make_output_triangle<Triangle>(t));
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sharp_feature_output_t>::value)
   {
-    Marching_cubes_csg_features* features = parameters::get_parameter(np, internal_np::sharp_feature_output);
-    if(features != nullptr)
+    Marching_cubes_csg_features* output = parameters::get_parameter(np, internal_np::sharp_feature_output);
+    if(output != nullptr)
     {
-      features->crease_edges = soup.crease_edges;
-      features->corner_vertices = soup.corner_vertices;
+      output->crease_edges = std::move(features.crease_edges);
+      output->corner_vertices = std::move(features.corner_vertices);
     }
   }
   statistics.seconds_triangulation += internal::seconds_since(start) - statistics.seconds_classification -

@@ -193,10 +193,7 @@ void marching_cubes_csg_slab_range(const Regular_lattice_3& lattice, const Trian
   builder.compute_vertices(range.points, internal::Progress());
   range.statistics.seconds_edges = internal::seconds_since(start);
   start = std::chrono::steady_clock::now();
-  std::vector<std::array<std::size_t, 2>> no_creases;
-  std::vector<std::size_t> no_corners;
-  builder.compute_triangles(range.points, range.triangles, no_creases, no_corners, range.statistics,
-                            internal::Progress());
+  builder.compute_plain_triangles(range.triangles, internal::Progress());
   range.statistics.seconds_triangulation = internal::seconds_since(start);
 
   // The boundary planes' vertex edges, in the builder's order: j, then i,

@@ -54,6 +54,13 @@ struct Is_std_array : std::false_type {};
 template <typename T, std::size_t N>
 struct Is_std_array<std::array<T, N>> : std::true_type {};
 
+// A std::vector of std::array<I, 3>, I an integer type: triangles the
+// builder can write in place.
+template <typename T>
+struct Is_index_triple_vector : std::false_type {};
+template <typename I>
+struct Is_index_triple_vector<std::vector<std::array<I, 3>>> : std::is_integral<I> {};
+
 template <typename Triangle>
 Triangle make_output_triangle(const std::array<std::size_t, 3>& t)
 {
@@ -94,12 +101,10 @@ std::size_t concurrency()
   return 1;
 }
 
-// The soup, before it is appended to the caller's containers.
-struct Csg_soup
+// The crease edges (vertex pairs, smaller index first) and corner vertices
+// of a soup.
+struct Csg_features
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  // Crease edges (vertex pairs, smaller index first) and corner vertices.
   std::vector<std::array<std::size_t, 2>> crease_edges;
   std::vector<std::size_t> corner_vertices;
 };
@@ -179,18 +184,19 @@ public:
         out.push_back(std::uint64_t(p.codes[c]) + 3 * std::uint64_t(m_n[0]) * p.rows[r]);
   }
 
-  // With sharp features, `points` (the edge vertices) gets the feature
+  // With sharp features: `points` (the edge vertices) gets the feature
   // vertices appended, and `soup_creases`, `soup_corners` the crease edges and
   // corner vertices.
-  void compute_triangles(std::vector<std::array<double, 3>>& points,
-                         std::vector<std::array<std::size_t, 3>>& triangles,
-                         std::vector<std::array<std::size_t, 2>>& soup_creases, std::vector<std::size_t>& soup_corners,
-                         Marching_cubes_csg_statistics& statistics, const Progress& progress)
+  void compute_feature_triangles(std::vector<std::array<double, 3>>& points,
+                                 std::vector<std::array<std::size_t, 3>>& triangles,
+                                 std::vector<std::array<std::size_t, 2>>& soup_creases,
+                                 std::vector<std::size_t>& soup_corners, Marching_cubes_csg_statistics& statistics,
+                                 const Progress& progress)
   {
+    CGAL_precondition(m_features.enabled);
     if(m_n[0] < 2 || m_n[1] < 2 || m_n[2] < 2)
       return;
     const std::size_t layers = m_n[2] - 1;
-    if(m_features.enabled)
     {
       // The chunks only change who computes what: the output is the
       // concatenation of the layers in order, whatever the chunking.
@@ -223,11 +229,24 @@ public:
           soup_creases.push_back({{e.v0, e.v1}});
       statistics.crease_edges = soup_creases.size();
       std::vector<Vector_3d>().swap(m_normals);
-      return;
     }
-    // Plain Marching Cubes: a count pass, then every layer writes its
-    // triangles at its offset (Flying Edges' scheme: no buffers to merge,
-    // and the output does not depend on the concurrency).
+  }
+
+  // Plain Marching Cubes, into `triangles` (whose elements are arrays of
+  // three indices of any integer type that holds the vertex count): a count
+  // pass, then every layer writes its triangles at its offset (Flying Edges'
+  // scheme: no buffers to merge, and the output does not depend on the
+  // concurrency).
+  template <typename Triangle>
+  void compute_plain_triangles(std::vector<Triangle>& triangles, const Progress& progress)
+  {
+    typedef typename Triangle::value_type Index;
+    triangles.clear();
+    if(m_n[0] < 2 || m_n[1] < 2 || m_n[2] < 2)
+      return;
+    if(m_vertex_offset.back() > std::size_t((std::numeric_limits<Index>::max)()))
+      throw Lattice_too_large_error("the output has more vertices than its index type can number");
+    const std::size_t layers = m_n[2] - 1;
     const Marching_cubes_table& table = Marching_cubes_table::instance();
     std::vector<std::size_t> offset(layers + 1, 0);
     concurrent_for<ConcurrencyTag>(
@@ -246,11 +265,11 @@ public:
     concurrent_for<ConcurrencyTag>(
         layers,
         [&](std::size_t k) {
-          std::array<std::size_t, 3>* out = triangles.data() + offset[k];
+          Triangle* out = triangles.data() + offset[k];
           for_each_crossed_cube(k, k + 1, [&](std::size_t, std::size_t, std::size_t, unsigned code,
                                               const auto& vertex_of) {
             for(const Marching_cubes_table::Triangle& t : table.triangles(code))
-              *out++ = {{vertex_of(t[0]), vertex_of(t[1]), vertex_of(t[2])}};
+              *out++ = Triangle{{Index(vertex_of(t[0])), Index(vertex_of(t[1])), Index(vertex_of(t[2]))}};
           });
         },
         progress.part(0.3, 1));
@@ -532,11 +551,47 @@ private:
         m_mask ^= std::uint64_t(1) << m_next->mesh;
       return m_mask;
     }
+    // The crossings on the edge (i, i + 1), after at(i).
+    Lattice_classifier_3::Crossing_range edge_after(std::size_t i) const
+    {
+      const Lattice_crossing* last = m_next;
+      while(last != m_end && last->index == i + 1)
+        ++last;
+      return Lattice_classifier_3::Crossing_range(m_next, last);
+    }
 
   private:
     std::uint64_t m_mask;
     const Lattice_crossing* m_next;
     const Lattice_crossing* m_end;
+  };
+
+  // The stored lines of one row along y or z, looked up with increasing u.
+  class Line_cursor
+  {
+  public:
+    Line_cursor(const Lattice_classifier_3& classifier, int axis, std::size_t row)
+      : m_lines(classifier.stored_lines(axis, row))
+    {}
+    // The crossings of the line at `u` on the edge ending at point `index`.
+    Lattice_classifier_3::Crossing_range edge(std::size_t u, std::uint32_t index)
+    {
+      while(m_at < m_lines.size() && m_lines[m_at].u < u)
+        ++m_at;
+      if(m_at == m_lines.size() || m_lines[m_at].u != u)
+        return Lattice_classifier_3::Crossing_range();
+      const Lattice_classifier_3::Crossing_range line = m_lines[m_at].crossings;
+      const Lattice_crossing* first = std::lower_bound(
+          line.begin(), line.end(), index, [](const Lattice_crossing& c, std::uint32_t x) { return c.index < x; });
+      const Lattice_crossing* last = first;
+      while(last != line.end() && last->index == index)
+        ++last;
+      return Lattice_classifier_3::Crossing_range(first, last);
+    }
+
+  private:
+    Lattice_classifier_3::Stored_lines m_lines;
+    std::size_t m_at = 0;
   };
 
   void vertices_of_plane(std::size_t k, std::vector<std::array<double, 3>>& points)
@@ -548,47 +603,58 @@ private:
     {
       const std::size_t j = p.rows[r];
       Line_mask here(m_classifier, j + ny * k);
-      // The masks of the next row and of the row above, made when needed.
+      // The masks of the next row and of the row above, made when needed;
+      // the y lines of plane k and the z lines of row j, walked with i.
       std::optional<Line_mask> next_row, row_above;
+      Line_cursor y_lines(m_classifier, 1, k), z_lines(m_classifier, 2, j);
       for(std::size_t c = p.begin[r]; c < p.begin[r + 1]; ++c, ++id)
       {
         const std::size_t i = p.codes[c] / 3;
         const int axis = int(p.codes[c] % 3);
         const std::uint64_t low_mask = here.at(i);
         const bool from_low = m_inside(low_mask);
+        Lattice_classifier_3::Crossing_range crossings;
         std::uint64_t inside_mask = low_mask;
-        if(!from_low)
+        if(axis == 0)
         {
-          if(axis == 0)
-          {
-            for(const Lattice_crossing& x : m_classifier.crossings_on_edge(0, i, j, k))
+          crossings = here.edge_after(i);
+          if(!from_low)
+            for(const Lattice_crossing& x : crossings)
               inside_mask ^= std::uint64_t(1) << x.mesh;
-          }
-          else if(axis == 1)
+        }
+        else if(axis == 1)
+        {
+          crossings = y_lines.edge(i, std::uint32_t(j + 1));
+          if(!from_low)
           {
             if(!next_row)
               next_row.emplace(m_classifier, j + 1 + ny * k);
             inside_mask = next_row->at(i);
           }
-          else
+        }
+        else
+        {
+          crossings = z_lines.edge(i, std::uint32_t(k + 1));
+          if(!from_low)
           {
             if(!row_above)
               row_above.emplace(m_classifier, j + ny * (k + 1));
             inside_mask = row_above->at(i);
           }
         }
-        points[id] = vertex_position(i, j, k, axis, from_low, inside_mask, m_features.enabled ? &m_normals[id] : nullptr);
+        points[id] = vertex_position(crossings, i, j, k, axis, from_low, inside_mask,
+                                     m_features.enabled ? &m_normals[id] : nullptr);
       }
     }
   }
 
-  // The vertex of a lattice edge whose inside end has mask `mask`, and (if
-  // `normal` is not null) the outward unit normal of the input triangle it
-  // lies on.
-  std::array<double, 3> vertex_position(std::size_t i, std::size_t j, std::size_t k, int axis, bool from_low,
-                                        std::uint64_t mask, Vector_3d* normal) const
+  // The vertex of a lattice edge with these crossings whose inside end has
+  // mask `mask`, and (if `normal` is not null) the outward unit normal of the
+  // input triangle it lies on.
+  std::array<double, 3> vertex_position(const Lattice_classifier_3::Crossing_range& crossings, std::size_t i,
+                                        std::size_t j, std::size_t k, int axis, bool from_low, std::uint64_t mask,
+                                        Vector_3d* normal) const
   {
-    const Lattice_classifier_3::Crossing_range crossings = m_classifier.crossings_on_edge(axis, i, j, k);
     const std::size_t c = csg_edge_crossing(crossings.begin(), crossings.size(), from_low, mask, m_inside);
     if(c == crossings.size())
       throw std::logic_error("marching_cubes_csg: the crossings of a lattice edge contradict the classification "
@@ -778,10 +844,14 @@ Marching_cubes_csg::Feature_settings feature_settings(const NamedParameters& np)
   return settings;
 }
 
-template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters>
+// Into `points` and `triangles` (arrays of three indices of any integer type
+// that holds the vertex count), both cleared first.
+template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters, typename Triangle>
 Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& meshes,
                                                       const Boolean_expression& expression,
-                                                      const Regular_lattice_3& lattice, Csg_soup& soup,
+                                                      const Regular_lattice_3& lattice,
+                                                      std::vector<std::array<double, 3>>& points,
+                                                      std::vector<Triangle>& triangles, Csg_features& soup_features,
                                                       const NamedParameters& np)
 {
   using parameters::choose_parameter;
@@ -802,18 +872,18 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   statistics.lattice_points = lattice.total_number_of_points();
   auto start = std::chrono::steady_clock::now();
   std::size_t read_meshes = 0;
-  std::vector<Lattice_triangle> triangles = read_csg_meshes(meshes, read_meshes, np);
+  std::vector<Lattice_triangle> input_triangles = read_csg_meshes(meshes, read_meshes, np);
   const bool check_resolution = choose_parameter(get_parameter(np, internal_np::resolution_check), true);
   const Marching_cubes_csg::Component_labels components =
-      check_resolution ? Marching_cubes_csg::label_components(triangles) : Marching_cubes_csg::Component_labels();
+      check_resolution ? Marching_cubes_csg::label_components(input_triangles) : Marching_cubes_csg::Component_labels();
   const Marching_cubes_csg::Feature_settings features = feature_settings(np);
   const std::vector<Marching_cubes_csg::Triangle_tangent> tangents =
-      features.enabled ? Marching_cubes_csg::triangle_tangents(triangles)
+      features.enabled ? Marching_cubes_csg::triangle_tangents(input_triangles)
                        : std::vector<Marching_cubes_csg::Triangle_tangent>();
   typedef Marching_cubes_csg_builder<ConcurrencyTag> Builder;
   const std::size_t reserved = lattice.number_of_points(2) * Builder::bytes_per_plane();
-  const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
-      std::move(triangles), number_of_meshes, lattice, max_memory, reserved, progress.part(0, 0.6));
+  Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
+      std::move(input_triangles), number_of_meshes, lattice, max_memory, reserved, progress.part(0, 0.6));
 #if defined(CGAL_BOOLEAN_ISOSURFACING_3_CHECK_CONSISTENCY) || !defined(NDEBUG)
   // O(points): only where the lattice is small enough to walk point by point.
   if(lattice.total_number_of_points() <= (std::size_t(1) << 27) && classifier.number_of_inconsistent_edges() != 0)
@@ -836,22 +906,51 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   const double seconds_yz = classifier.seconds(1) + classifier.seconds(2);
   statistics.seconds_classification = seconds_since(start) - seconds_yz;
 
-  start = std::chrono::steady_clock::now();
-  builder.compute_vertices(soup.points, progress.part(0.65, 0.8));
-  const std::size_t edge_vertices = soup.points.size();
-  statistics.seconds_edges = seconds_yz + seconds_since(start);
-
-  start = std::chrono::steady_clock::now();
-  builder.compute_triangles(soup.points, soup.triangles, soup.crease_edges, soup.corner_vertices, statistics,
-                            progress.part(0.8, 0.98));
   const double sliver = choose_parameter(get_parameter(np, internal_np::sliver_edge_length), features.enabled ? 0.1 : 0.0);
   if(!(sliver >= 0 && sliver < 0.5))
     throw Invalid_input_error("sliver_edge_length must be in [0, 0.5) cells, got " + std::to_string(sliver));
-  if(sliver > 0)
-    statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges(
-        soup.points, soup.triangles, edge_vertices, sliver * lattice.spacing(), soup.crease_edges, soup.corner_vertices);
-  statistics.number_of_vertices = soup.points.size();
-  statistics.number_of_faces = soup.triangles.size();
+
+  start = std::chrono::steady_clock::now();
+  points.clear();
+  triangles.clear();
+  soup_features = Csg_features();
+  builder.compute_vertices(points, progress.part(0.65, 0.8));
+  const std::size_t edge_vertices = points.size();
+  statistics.seconds_edges = seconds_yz + seconds_since(start);
+  // Nothing after the vertices reads the crossings: most of the memory of
+  // a fine lattice, released before the triangles take theirs.
+  classifier.release_crossings();
+
+  start = std::chrono::steady_clock::now();
+  if(!features.enabled && sliver == 0)
+    builder.compute_plain_triangles(triangles, progress.part(0.8, 0.98));
+  else
+  {
+    // The feature triangulation and the collapse work on std::size_t indices.
+    std::vector<std::array<std::size_t, 3>> work;
+    if(features.enabled)
+      builder.compute_feature_triangles(points, work, soup_features.crease_edges, soup_features.corner_vertices,
+                                        statistics, progress.part(0.8, 0.98));
+    else
+      builder.compute_plain_triangles(work, progress.part(0.8, 0.98));
+    if(sliver > 0)
+      statistics.collapsed_edges =
+          Marching_cubes_csg::collapse_short_edges(points, work, edge_vertices, sliver * lattice.spacing(),
+                                                   soup_features.crease_edges, soup_features.corner_vertices);
+    if constexpr(std::is_same<Triangle, std::array<std::size_t, 3>>::value)
+      triangles.swap(work);
+    else
+    {
+      typedef typename Triangle::value_type Index;
+      if(points.size() > std::size_t((std::numeric_limits<Index>::max)()))
+        throw Lattice_too_large_error("the output has more vertices than its index type can number");
+      triangles.resize(work.size());
+      for(std::size_t t = 0; t < work.size(); ++t)
+        triangles[t] = Triangle{{Index(work[t][0]), Index(work[t][1]), Index(work[t][2])}};
+    }
+  }
+  statistics.number_of_vertices = points.size();
+  statistics.number_of_faces = triangles.size();
   statistics.seconds_triangulation = seconds_since(start);
   add_csg_warnings(statistics);
   return statistics;
