@@ -35,6 +35,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <chrono>
@@ -153,21 +154,35 @@ CGAL::Bbox_3 bounding_box(const std::vector<Soup>& soups)
 }
 
 // The crease edges (vertex pairs) chained into polylines between corners,
-// branch points and ends; a closed crease repeats its first vertex.
-BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::vector<std::array<std::size_t, 2>>& edges,
+// branch points and ends; a closed crease repeats its first vertex.  Only
+// the vertices on creases are indexed (an output has millions of others).
+BI::Crease_network crease_polylines(const std::vector<std::array<std::size_t, 2>>& edges,
                                     const std::vector<std::size_t>& corners)
 {
   BI::Crease_network network;
   network.corners = corners;
   network.number_of_crease_edges = edges.size();
-  std::vector<std::vector<std::size_t>> incident(number_of_vertices);
+  // The crease vertices, sorted; a vertex's slot is its rank among them.
+  std::vector<std::size_t> vertices;
+  for(const auto& e : edges)
+    vertices.insert(vertices.end(), e.begin(), e.end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  auto slot = [&](std::size_t v) {
+    return std::size_t(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
+  };
+  std::vector<std::vector<std::size_t>> incident(vertices.size());
   for(std::size_t e = 0; e < edges.size(); ++e)
     for(std::size_t v : edges[e])
-      incident[v].push_back(e);
-  std::vector<bool> is_corner(number_of_vertices, false), used(edges.size(), false);
+      incident[slot(v)].push_back(e);
+  std::vector<bool> is_corner(vertices.size(), false), used(edges.size(), false);
   for(std::size_t v : corners)
-    is_corner[v] = true;
-  auto is_end = [&](std::size_t v) { return is_corner[v] || incident[v].size() != 2; };
+  {
+    const std::size_t s = slot(v);
+    if(s < vertices.size() && vertices[s] == v)
+      is_corner[s] = true;
+  }
+  auto is_end = [&](std::size_t s) { return is_corner[s] || incident[s].size() != 2; };
   auto walk = [&](std::size_t v, std::size_t e) {
     std::vector<std::size_t> line{v};
     while(!used[e])
@@ -175,17 +190,18 @@ BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::v
       used[e] = true;
       v = edges[e][0] == v ? edges[e][1] : edges[e][0];
       line.push_back(v);
-      if(is_end(v))
+      const std::size_t s = slot(v);
+      if(is_end(s))
         break;
-      e = incident[v][0] == e ? incident[v][1] : incident[v][0];
+      e = incident[s][0] == e ? incident[s][1] : incident[s][0];
     }
     network.polylines.push_back(std::move(line));
   };
-  for(std::size_t v = 0; v < number_of_vertices; ++v)
-    if(is_end(v))
-      for(std::size_t e : incident[v])
+  for(std::size_t s = 0; s < vertices.size(); ++s)
+    if(is_end(s))
+      for(std::size_t e : incident[s])
         if(!used[e])
-          walk(v, e);
+          walk(vertices[s], e);
   for(std::size_t e = 0; e < edges.size(); ++e)
     if(!used[e])
       walk(edges[e][0], e); // a closed loop without corner
@@ -216,7 +232,7 @@ Result run_csg(const std::vector<Soup>& meshes, const BI::Boolean_expression& ex
 #endif
     r.statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(r.lattice, meshes, expression, r.soup.points,
                                                                 r.soup.triangles, np);
-  r.creases = crease_polylines(r.soup.points.size(), features.crease_edges, features.corner_vertices);
+  r.creases = crease_polylines(features.crease_edges, features.corner_vertices);
   return r;
 }
 
