@@ -14,11 +14,13 @@
 // Measures, per case and method (all distances in units of the spacing r):
 //   - the distance from the exact result's sharp edges (dihedral angle
 //     above 30 degrees, sampled every r/8) to the output surface: p95 and
-//     max over all of them; over the "resolvable" ones (not a knife edge:
-//     an interior angle of at least 2 atan(1/2) = 53.13 degrees, so that the
-//     solid is at least r thick at distance r from the edge); over the
-//     straight ones (resolvable, on an exact edge at least 2r long, at least
-//     r from its ends);
+//     max over all of them; over the "resolvable" ones (not on or near a
+//     knife edge: a knife edge has an interior angle below 2 atan(1/2) =
+//     53.13 degrees, so that the solid is thinner than r at distance r from
+//     it, and the samples closer than r / (2 tan(theta / 2)) to a knife edge
+//     of interior angle theta are in its thin wedge); over the straight ones
+//     (resolvable, on an exact edge at least 2r long, at least r from its
+//     ends);
 //   - the two-sided Hausdorff distance (area-weighted random samples of both
 //     surfaces, plus the exact result's vertices and sharp-edge samples): all,
 //     and away from thin wedges (samples farther than r / (2 tan(theta / 2))
@@ -399,12 +401,13 @@ void build_reference(Reference& ref, const std::vector<Mesh>& meshes, char op, d
     const Segment& s = ref.sharp[e];
     const double length = std::sqrt(s.squared_length());
     const int n = (std::max)(1, int(std::ceil(length / (r / 8))));
-    const bool knife = interior[e] < knife_angle;
     for(int i = 0; i <= n; ++i)
     {
       const double t = double(i) / n;
-      const bool straight = !knife && length >= 2 * r && t * length >= r && (1 - t) * length >= r;
-      ref.sharp_samples.push_back({s.source() + (s.target() - s.source()) * t, knife, straight});
+      const Point p = s.source() + (s.target() - s.source()) * t;
+      const bool thin = interior[e] < knife_angle || ref.in_thin_zone(p);
+      const bool straight = !thin && length >= 2 * r && t * length >= r && (1 - t) * length >= r;
+      ref.sharp_samples.push_back({p, thin, straight});
     }
   }
   for(const auto& s : sample_triangles(ref.triangles, r, 16, 1))

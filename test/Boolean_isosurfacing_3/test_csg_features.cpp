@@ -282,7 +282,7 @@ void check_valid(const Csg_run& run, const std::string& what)
 // sharp edges compared to plain Marching Cubes on the same lattice: printed,
 // and the feature output must be closer to the exact sharp edges.
 Csg_run measure_creases(const std::vector<Mesh>& meshes, const std::string& expression, std::size_t cells,
-                        const std::vector<Segment>& sharp, const std::string& what)
+                        const std::vector<Segment>& sharp, const std::string& what, double p95_bound)
 {
   Csg_run run = run_csg(meshes, expression, cells);
   const double r = run.spacing;
@@ -296,10 +296,11 @@ Csg_run measure_creases(const std::vector<Mesh>& meshes, const std::string& expr
             << "); to crease edges max " << covered.max << " r, p95 " << covered.p95 << " r; corners "
             << run.features.corner_vertices.size() << "; plain feature polygons "
             << run.statistics.plain_feature_polygons << "\n";
-  // Measured: the p95 is 0.49-0.73 of plain MC's (the crease polylines
-  // have gaps where a cube keeps its plain triangulation); far from the
-  // 0.1 r goal, see features.md.
+  // Measured (features.md): box & rotated box p95 0.15-0.21 r, cylinder |
+  // box 0.011-0.036 r; plain MC 0.49-0.58 r.  The crease polylines still
+  // have gaps where a cube keeps its plain triangulation.
   EXPECT_LT(surface.p95, 0.8 * plain_surface.p95);
+  EXPECT_LT(surface.p95, p95_bound);
   EXPECT_LE(surface.max, plain_surface.max);
   return run;
 }
@@ -354,7 +355,7 @@ TEST(CsgFeatures, BoxIntersectedWithARotatedBox)
   for(std::size_t cells : {16, 32, 64})
   {
     SCOPED_TRACE("cells " + std::to_string(cells));
-    const Csg_run run = measure_creases({a, b}, "A & B", cells, sharp, "box & rotated box");
+    const Csg_run run = measure_creases({a, b}, "A & B", cells, sharp, "box & rotated box", 0.3);
     const double r = run.spacing;
     // Crease edges are on the exact sharp edges (most of them: a few flips
     // join two feature vertices across a face near a corner).
@@ -378,7 +379,7 @@ TEST(CsgFeatures, CylinderUnitedWithABox)
   for(std::size_t cells : {16, 32, 64})
   {
     SCOPED_TRACE("cells " + std::to_string(cells));
-    const Csg_run run = measure_creases({a, b}, "A | B", cells, sharp, "cylinder | box");
+    const Csg_run run = measure_creases({a, b}, "A | B", cells, sharp, "cylinder | box", 0.1);
     errors.push_back(std::abs(PMP::volume(run.mesh) - exact_volume) / exact_volume);
   }
   std::cout << "volume errors " << errors[0] << " " << errors[1] << " " << errors[2] << "\n";
