@@ -122,15 +122,7 @@ public:
     if(kind != Feature_kind::NONE)
       return kind;
     if(folded)
-    {
       ++m_counts.folded;
-#ifdef BISO_DEBUG_FOLD
-      std::fprintf(stderr, "FOLD cube %g %g %g size %zu\n", m_low[0], m_low[1], m_low[2], size);
-      for(std::size_t i = 0; i < size; ++i)
-        std::fprintf(stderr, "  p %.9g %.9g %.9g n %.6f %.6f %.6f\n", p[i][0], p[i][1], p[i][2], n[i][0], n[i][1], n[i][2]);
-      for(int r = 3; r >= 2; --r) { Vector_3d x, d; if(solve_feature_quadric(p, n, size, r, m_settings, x, d)) std::fprintf(stderr, "  rank %d x %.9g %.9g %.9g\n", r, x[0], x[1], x[2]); }
-#endif
-    }
     else
       ++m_counts.no_point;
     return Feature_kind::NONE;
