@@ -34,14 +34,19 @@
 //   - closed 2-manifold and self-intersection (PMP::does_self_intersect);
 //   - time: best of 3 sequential runs (OpenVDB limited to one thread).
 //
-// usage: csg_features_measure [--cells N] [--dump DIR] [CASE ...]
+// usage: csg_features_measure [--cells N] [--dump DIR] [--post-processing] [CASE ...]
 // Without CASE, every case; `csg_features_measure --list` lists them.
+// --post-processing adds the feature output simplified within 0.1 r
+// (simplify_keeping_creases()) and remeshed to edges of r
+// (remesh_keeping_creases()), their creases and corners kept.
 // --dump DIR writes, per case, the exact result, the outputs, their crease
 // polylines and the sharp-edge samples farther than 0.2 r from the output.
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
+#include <CGAL/Boolean_isosurfacing_3/remesh_keeping_creases.h>
+#include <CGAL/Boolean_isosurfacing_3/simplify_keeping_creases.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -599,6 +604,38 @@ Soup run_ours(const std::vector<Mesh>& meshes, char op, const BI::Regular_lattic
   return soup;
 }
 
+// The feature output as a Surface_mesh with its creases and corners, then
+// simplified (max_distance > 0) or remeshed (edge_length > 0).
+Soup run_post_processed(const std::vector<Mesh>& meshes, char op, const BI::Regular_lattice_3& lattice,
+                        double max_distance, double edge_length, double& seconds)
+{
+  Mesh out;
+  auto crease = out.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
+  auto corner = out.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
+  BI::marching_cubes_csg(lattice, meshes, expression_of(op), out,
+                         CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner));
+  const auto start = std::chrono::steady_clock::now();
+  const auto maps = CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner);
+  if(max_distance > 0)
+    BI::simplify_keeping_creases(out, max_distance, maps);
+  else
+    BI::remesh_keeping_creases(out, edge_length, maps);
+  seconds = seconds_since(start);
+  out.collect_garbage();
+  Soup soup;
+  soup.points.assign(out.points().begin(), out.points().end());
+  for(auto f : faces(out))
+  {
+    const auto h = halfedge(f, out);
+    soup.triangles.push_back({{std::size_t(source(h, out)), std::size_t(target(h, out)),
+                               std::size_t(target(next(h, out), out))}});
+  }
+  for(auto e : edges(out))
+    if(crease[e])
+      soup.creases.push_back({{std::size_t(out.vertex(e, 0)), std::size_t(out.vertex(e, 1))}});
+  return soup;
+}
+
 #ifdef BISO_WITH_OPENVDB
 Soup run_openvdb(const std::vector<Mesh>& meshes, char op, double voxel, double& seconds)
 {
@@ -751,7 +788,7 @@ int main(int argc, char** argv)
   std::size_t cells = 128;
   std::string dump;
   std::vector<std::string> wanted;
-  bool list = false;
+  bool list = false, post_processing = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -761,9 +798,11 @@ int main(int argc, char** argv)
       dump = argv[++i];
     else if(a == "--list")
       list = true;
+    else if(a == "--post-processing")
+      post_processing = true;
     else if(!a.empty() && a[0] == '-' && a.size() > 1 && a[1] == '-')
     {
-      std::cerr << "usage: csg_features_measure [--cells N] [--dump DIR] [--list] [CASE ...]\n";
+      std::cerr << "usage: csg_features_measure [--cells N] [--dump DIR] [--post-processing] [--list] [CASE ...]\n";
       return 2;
     }
     else
@@ -860,6 +899,23 @@ int main(int argc, char** argv)
         plain_seconds = m.seconds;
       add(m, soup, thin, true);
     }
+    if(post_processing)
+      for(int which = 0; which < 2; ++which)
+      {
+        Measure m;
+        m.method = which == 0 ? "features + simplify 0.1 r" : "features + remesh r";
+        try
+        {
+          const Soup soup = run_post_processed(meshes, c.op, lattice, which == 0 ? 0.1 * r : 0, which == 0 ? 0 : r,
+                                               m.seconds);
+          m.note = "time: post-processing only";
+          add(m, soup, std::nan(""), true);
+        }
+        catch(const std::exception& e)
+        {
+          std::cerr << "  " << m.method << " failed: " << e.what() << "\n";
+        }
+      }
 #ifdef BISO_WITH_OPENVDB
     {
       Measure m;

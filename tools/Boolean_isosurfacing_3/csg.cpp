@@ -25,6 +25,10 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
+#include <CGAL/Boolean_isosurfacing_3/overlapping_shells.h>
+#include <CGAL/Boolean_isosurfacing_3/remesh_keeping_creases.h>
+#include <CGAL/Boolean_isosurfacing_3/result_bounding_box.h>
+#include <CGAL/Boolean_isosurfacing_3/simplify_keeping_creases.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -131,6 +135,17 @@ CGAL::Bbox_3 bounding_box(const std::vector<Mesh>& meshes)
   return box;
 }
 
+// The box the lattice is sized on: where the result can be
+// (result_bounding_box()), or all the inputs' box when the result is
+// unbounded (it is clipped to that box) or cannot be anywhere.
+CGAL::Bbox_3 lattice_box(const BI::Boolean_expression& expression, const std::vector<Mesh>& meshes)
+{
+  std::vector<CGAL::Bbox_3> boxes;
+  for(const Mesh& m : meshes) boxes.push_back(PMP::bbox(m));
+  const BI::Result_bounding_box result = BI::result_bounding_box(expression, boxes);
+  return result.bounded && !result.empty ? result.box : bounding_box(meshes);
+}
+
 // The crease edges (vertex pairs) chained into polylines between corners,
 // branch points and ends; a closed crease repeats its first vertex.
 BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::vector<std::array<std::size_t, 2>>& edges,
@@ -171,6 +186,21 @@ BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::v
   return network;
 }
 
+// --simplify / --remesh on the result, its creases and corners kept; the
+// mesh is compacted again (vertex i is soup point i for what follows).
+template <typename Crease_map, typename Corner_map>
+void post_process(Mesh& output, Crease_map crease, Corner_map corner, const Options& options, double spacing)
+{
+  if(output.number_of_faces() == 0 || (!options.simplify && !options.remesh))
+    return;
+  const auto maps = CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner);
+  if(options.simplify)
+    BI::simplify_keeping_creases(output, options.simplify_cells * spacing, maps);
+  else
+    BI::remesh_keeping_creases(output, options.remesh_length > 0 ? options.remesh_length : spacing, maps);
+  output.collect_garbage();
+}
+
 // The lattice encloses `box` (the inputs' bounding box) with `margin_cells`;
 // the library's default lattice keeps the box's faces off the lattice planes.
 Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& expression, const Options& options,
@@ -198,6 +228,7 @@ Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& ex
   else
 #endif
     statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(meshes, expression, lattice, output, np);
+  post_process(output, crease, corner, options, lattice.spacing());
   // A fresh Surface_mesh: vertex i is soup point i.
   std::vector<std::array<std::size_t, 2>> edges;
   std::vector<std::size_t> corners;
@@ -469,6 +500,31 @@ std::vector<Mesh> read_inputs(Tool& tool, const std::vector<std::string>& files)
   return meshes;
 }
 
+// Inputs whose own shells overlap (or, with --check-inputs, intersect):
+// parity, which the classification uses, makes a doubly covered part a void
+// where Manifold and OpenSCAD take the union.  One warning per mesh.
+void overlap_warnings(Tool& tool, const Options& options, const std::vector<Mesh>& meshes)
+{
+  for(std::size_t i = 0; i < options.files.size(); ++i)
+  {
+    const BI::Overlapping_shells_report report = BI::find_overlapping_shells(meshes[i], options.check_inputs);
+    if(!report.overlaps())
+      continue;
+    std::string text = options.files[i] + " (" + variable_name(i) + ")";
+    if(!report.overlapping_pairs.empty())
+    {
+      const auto& pair = report.overlapping_pairs.front();
+      text += " has overlapping shells (" + std::to_string(report.overlapping_pairs.size()) +
+              " pair(s) of its " + std::to_string(report.components) + " components, e.g. " +
+              std::to_string(pair.first) + " and " + std::to_string(pair.second) + ")";
+    }
+    else
+      text += " intersects itself";
+    tool.warning(text + ": inside is decided by parity, so a part covered twice is outside the solid "
+                        "(Manifold and OpenSCAD take the union there)");
+  }
+}
+
 // An unbounded result clipped to a box one cell beyond the inputs.
 struct Clip
 {
@@ -582,7 +638,8 @@ int run(Tool& tool, const Options& options)
     if(!f->empty()) biso_tools::check_output_file(*f);
 
   std::vector<Mesh> meshes = read_inputs(tool, options.files);
-  const CGAL::Bbox_3 box = bounding_box(meshes);
+  overlap_warnings(tool, options, meshes);
+  const CGAL::Bbox_3 box = lattice_box(requested, meshes);
   const Clip clip = clip_unbounded(options, box, meshes, expression);
 
   const biso_tools::Stopwatch watch;
