@@ -254,22 +254,22 @@ constexpr double degenerate_quality = 1e-9;
 
 /// Whether the fan of the polygon `points[0..n)` (directed, outward) around
 /// `apex` keeps the orientation the crossing normals give: every fan
-/// triangle's normal must make an acute angle with the sum of the normals of
-/// its two polygon vertices, and no fan triangle may be degenerate.
-/// Otherwise the apex would fold the surface, and the cube keeps its plain
-/// triangulation.  (A triangle from a vertex of one plane to a vertex of the
-/// other across a crease is a chamfer: its normal lies between the two, and
-/// may be obtuse to one of them at a crease of 90 degrees or more, without
-/// any fold; a triangle within one plane whose apex is on the wrong side of
-/// its polygon side faces against both normals.)
+/// triangle's normal must make an acute angle with the normals of its two
+/// polygon vertices, and no fan triangle may be degenerate.  Otherwise the
+/// apex would fold the surface, and the next candidate is tried (or the cube
+/// keeps its plain triangulation).  A weaker test (acute to the sum of the
+/// two normals: a chamfer triangle across a crease of 90 degrees or more is
+/// often obtuse to one of them without folding) recovered more creases but
+/// let fans cross neighbouring triangles (tray_bottom united with a moved
+/// copy at 128 cells: 17 intersecting pairs), so it is not used without a
+/// self-intersection repair (features.md).
 inline bool fan_is_unfolded(const Vector_3d* points, const Vector_3d* normals, std::size_t n, const Vector_3d& apex)
 {
   for(std::size_t i = 0; i < n; ++i)
   {
     const std::size_t j = (i + 1) % n;
     const Vector_3d t = triangle_normal(points[i], points[j], apex);
-    const Vector_3d sum{{normals[i][0] + normals[j][0], normals[i][1] + normals[j][1], normals[i][2] + normals[j][2]}};
-    if(!(dot3(t, sum) > 0))
+    if(!(dot3(t, normals[i]) > 0 && dot3(t, normals[j]) > 0))
       return false;
     if(!(triangle_quality(points[i], points[j], apex) > degenerate_quality))
       return false;
