@@ -720,6 +720,66 @@ std::vector<std::array<double, 3>> read_points(const std::string& text, bool pol
   return points;
 }
 
+// Issue 17: --simplify keeps the (exact) result in a few hundred triangles,
+// --remesh keeps it too; the two exclude each other.
+TEST_F(CsgTool, SimplifyAndRemeshKeepTheResult)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(1.137, 1.091, 1.063, 2));
+  const double exact = 8 - 0.863 * 0.909 * 0.937;
+  const Result plain = run(a + " " + b + " --op difference --cells 32");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const Result simplified = run(a + " " + b + " --op difference --cells 32 --simplify");
+  ASSERT_EQ(simplified.status, 0) << simplified.err;
+  EXPECT_NEAR(number_after(simplified.out, "volume "), exact, 1e-9 * exact) << simplified.out;
+  EXPECT_LE(number_after(simplified.out, "vertices, "), 300) << simplified.out;
+  EXPECT_GT(number_after(plain.out, "vertices, "), 5 * number_after(simplified.out, "vertices, ")) << plain.out;
+  const Result remeshed = run(a + " " + b + " --op difference --cells 32 --remesh 0.1");
+  ASSERT_EQ(remeshed.status, 0) << remeshed.err;
+  EXPECT_NEAR(number_after(remeshed.out, "volume "), exact, 1e-9 * exact) << remeshed.out;
+  const Result both = run(a + " " + b + " --op difference --cells 32 --remesh --simplify");
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("at most one of --simplify and --remesh"), std::string::npos) << both.err;
+  EXPECT_EQ(run(a + " " + b + " --op difference --cells 32 --simplify -1").status, 2);
+}
+
+// Issue 17: the lattice is sized on where the result can be.  A unit part
+// intersected with an operand 10^30 wide comes out whole (on the inputs' box
+// the lattice would have cells of 10^29).
+TEST_F(CsgTool, ATinyPartInAHugeOperandIsSizedOnThePart)
+{
+  const std::string a = write("a.off", box_off(0.1, 0.2, 0.3, 1)), huge = write("huge.off", box_off(-1e30, -1e30, -1e30, 2e30));
+  const Result r = run(a + " " + huge + " --op intersection --cells 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "volume "), 1.0, 1e-9) << r.out;
+  const Result d = run(a + " " + huge + " --op difference --cells 16");
+  ASSERT_EQ(d.status, 0) << d.err;
+  EXPECT_NE(d.out.find("the result is empty"), std::string::npos) << d.out;
+}
+
+// Issue 17: an input whose own shells overlap is named (parity makes the
+// doubly covered part a void).
+TEST_F(CsgTool, OverlappingShellsOfOneInputAreNamed)
+{
+  // Two unit-ish boxes in one file, overlapping.
+  std::ostringstream two;
+  two.precision(17);
+  two << "OFF\n16 24 0\n";
+  for(double o : {0.0, 0.5})
+    for(int k = 0; k < 8; ++k)
+      two << o + (k & 1) << ' ' << o + ((k >> 1) & 1) << ' ' << o + ((k >> 2) & 1) << "\n";
+  const int faces[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                            {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  for(int shell = 0; shell < 2; ++shell)
+    for(const auto& f : faces)
+      two << "3 " << f[0] + 8 * shell << ' ' << f[1] + 8 * shell << ' ' << f[2] + 8 * shell << "\n";
+  const std::string a = write("two_shells.off", two.str()), b = write("b.off", box_off(3, 3, 3, 1));
+  const Result r = run(a + " " + b + " --op union --cells 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("two_shells.off (A) has overlapping shells"), std::string::npos) << r.err;
+  const Result clean = run(b + " " + b + " --op union --cells 16 --check-inputs");
+  EXPECT_EQ(clean.err.find("overlapping"), std::string::npos) << clean.err;
+}
+
 // A = [0,2]^3 minus B = A moved by a non-lattice offset: the exact result has
 // 14 vertices (7 of A, B's lowest corner, 3 + 3 edge-face intersections), and
 // its edges are on the planes x in {0, 2, bx}, y in {0, 2, by}, z in {0, 2, bz}.

@@ -22,10 +22,15 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/boolean_isosurface_files.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
+#include <CGAL/Boolean_isosurfacing_3/overlapping_shells.h>
+#include <CGAL/Boolean_isosurfacing_3/remesh_keeping_creases.h>
+#include <CGAL/Boolean_isosurfacing_3/result_bounding_box.h>
+#include <CGAL/Boolean_isosurfacing_3/simplify_keeping_creases.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -144,13 +149,31 @@ std::string lattice_message(const Options& options, const BI::Lattice_too_large_
   return options.lattice_flag.empty() ? message : options.lattice_flag + ": " + message;
 }
 
+CGAL::Bbox_3 bounding_box(const Soup& soup)
+{
+  CGAL::Bbox_3 box;
+  for(const auto& p : soup.points)
+    box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+  return box;
+}
+
 CGAL::Bbox_3 bounding_box(const std::vector<Soup>& soups)
 {
   CGAL::Bbox_3 box;
   for(const Soup& s : soups)
-    for(const auto& p : s.points)
-      box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+    box += bounding_box(s);
   return box;
+}
+
+// The box the lattice is sized on: where the result can be
+// (result_bounding_box()), or all the inputs' box when the result is
+// unbounded (it is clipped to that box) or cannot be anywhere.
+CGAL::Bbox_3 lattice_box(const BI::Boolean_expression& expression, const std::vector<Soup>& meshes)
+{
+  std::vector<CGAL::Bbox_3> boxes;
+  for(const Soup& m : meshes) boxes.push_back(bounding_box(m));
+  const BI::Result_bounding_box result = BI::result_bounding_box(expression, boxes);
+  return result.bounded && !result.empty ? result.box : bounding_box(meshes);
 }
 
 // The crease edges (vertex pairs) chained into polylines between corners,
@@ -208,6 +231,52 @@ BI::Crease_network crease_polylines(const std::vector<std::array<std::size_t, 2>
   return network;
 }
 
+// --simplify / --remesh on the result, its creases and corners kept.  They
+// work on a halfedge mesh, built here only when asked for; the soup and the
+// features are then replaced by the processed mesh's (compacted: vertex i is
+// soup point i).
+void post_process(Soup& soup, BI::Marching_cubes_csg_features& features, const Options& options, double spacing)
+{
+  if(soup.triangles.empty() || (!options.simplify && !options.remesh))
+    return;
+  Mesh output;
+  {
+    std::vector<Point> points;
+    points.reserve(soup.points.size());
+    for(const auto& p : soup.points)
+      points.emplace_back(p[0], p[1], p[2]);
+    PMP::polygon_soup_to_polygon_mesh(points, soup.triangles, output);
+  }
+  auto crease = output.add_property_map<Mesh::Edge_index, bool>("e:csg_crease", false).first;
+  auto corner = output.add_property_map<Mesh::Vertex_index, bool>("v:csg_corner", false).first;
+  // polygon_soup_to_polygon_mesh() keeps the points' order on a valid soup.
+  for(const auto& e : features.crease_edges)
+  {
+    const auto h = halfedge(Mesh::Vertex_index(Mesh::size_type(e[0])), Mesh::Vertex_index(Mesh::size_type(e[1])), output);
+    if(h.second)
+      crease[edge(h.first, output)] = true;
+  }
+  for(std::size_t v : features.corner_vertices)
+    corner[Mesh::Vertex_index(Mesh::size_type(v))] = true;
+  const auto maps = CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner);
+  if(options.simplify)
+    BI::simplify_keeping_creases(output, options.simplify_cells * spacing, maps);
+  else
+    BI::remesh_keeping_creases(output, options.remesh_length > 0 ? options.remesh_length : spacing, maps);
+  output.collect_garbage();
+  soup = soup_of(output);
+  features = BI::Marching_cubes_csg_features();
+  for(const Mesh::Edge_index e : output.edges())
+    if(crease[e])
+    {
+      const std::size_t a = std::size_t(output.vertex(e, 0)), b = std::size_t(output.vertex(e, 1));
+      features.crease_edges.push_back({{(std::min)(a, b), (std::max)(a, b)}});
+    }
+  for(const Mesh::Vertex_index v : output.vertices())
+    if(corner[v])
+      features.corner_vertices.push_back(std::size_t(v));
+}
+
 // The lattice encloses `box` (the inputs' bounding box) with `margin_cells`;
 // the library's default lattice keeps the box's faces off the lattice planes.
 Result run_csg(const std::vector<Soup>& meshes, const BI::Boolean_expression& expression, const Options& options,
@@ -232,6 +301,7 @@ Result run_csg(const std::vector<Soup>& meshes, const BI::Boolean_expression& ex
 #endif
     r.statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(r.lattice, meshes, expression, r.soup.points,
                                                                 r.soup.triangles, np);
+  post_process(r.soup, features, options, r.lattice.spacing());
   r.creases = crease_polylines(features.crease_edges, features.corner_vertices);
   return r;
 }
@@ -516,6 +586,71 @@ std::vector<Soup> read_inputs(Tool& tool, const std::vector<std::string>& files)
   return meshes;
 }
 
+// Inputs whose own shells overlap (or, with --check-inputs, intersect):
+// parity, which the classification uses, makes a doubly covered part a void
+// where Manifold and OpenSCAD take the union.  One warning per mesh.
+// The number of connected components of a soup (triangles joined by their
+// vertex indices): a union-find, cheap next to reading the file.
+std::size_t soup_components(const Soup& soup)
+{
+  std::vector<std::uint32_t> parent(soup.points.size());
+  for(std::uint32_t v = 0; v < parent.size(); ++v)
+    parent[v] = v;
+  auto find = [&](std::uint32_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(const Soup::Triangle& t : soup.triangles)
+    for(int k = 1; k < 3; ++k)
+    {
+      const std::uint32_t a = find(t[0]), b = find(t[k]);
+      if(a != b)
+        parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  std::vector<bool> used(soup.points.size(), false);
+  for(const Soup::Triangle& t : soup.triangles)
+    used[t[0]] = true;
+  std::size_t components = 0;
+  for(std::uint32_t v = 0; v < parent.size(); ++v)
+    components += used[v] && find(v) == v ? 1 : 0;
+  return components;
+}
+
+void overlap_warnings(Tool& tool, const Options& options, const std::vector<Soup>& meshes)
+{
+  for(std::size_t i = 0; i < options.files.size(); ++i)
+  {
+    // A halfedge mesh is built only where there is something to check.
+    if(!options.check_inputs && soup_components(meshes[i]) < 2)
+      continue;
+    Mesh mesh;
+    try
+    {
+      BI::IO::triangle_soup_to_mesh(meshes[i], mesh);
+    }
+    catch(const BI::Invalid_input_error&)
+    {
+      continue; // non-manifold vertices: not checked (the classification counts crossings anyway)
+    }
+    const BI::Overlapping_shells_report report = BI::find_overlapping_shells(mesh, options.check_inputs);
+    if(!report.overlaps())
+      continue;
+    std::string text = options.files[i] + " (" + variable_name(i) + ")";
+    if(!report.overlapping_pairs.empty())
+    {
+      const auto& pair = report.overlapping_pairs.front();
+      text += " has overlapping shells (" + std::to_string(report.overlapping_pairs.size()) +
+              " pair(s) of its " + std::to_string(report.components) + " components, e.g. " +
+              std::to_string(pair.first) + " and " + std::to_string(pair.second) + ")";
+    }
+    else
+      text += " intersects itself";
+    tool.warning(text + ": inside is decided by parity, so a part covered twice is outside the solid "
+                        "(Manifold and OpenSCAD take the union there)");
+  }
+}
+
 // An unbounded result clipped to a box one cell beyond the inputs.
 struct Clip
 {
@@ -634,7 +769,8 @@ int run(Tool& tool, const Options& options)
     if(!f->empty()) biso_tools::check_output_file(*f);
 
   std::vector<Soup> meshes = read_inputs(tool, options.files);
-  const CGAL::Bbox_3 box = bounding_box(meshes);
+  overlap_warnings(tool, options, meshes);
+  const CGAL::Bbox_3 box = lattice_box(requested, meshes);
   const Clip clip = clip_unbounded(options, box, meshes, expression);
 
   const biso_tools::Stopwatch watch;
