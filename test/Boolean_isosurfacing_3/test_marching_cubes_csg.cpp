@@ -1059,6 +1059,46 @@ TEST(McCsgApi, SurfaceMeshOutputVectorTrianglesProgressAndAppending)
   EXPECT_GE(s.seconds_triangulation, 0.0);
 }
 
+// face_patch_map labels each face with the input mesh it lies on: two boxes
+// overlapping along x, united; faces well away from the other box carry
+// their own box's number, with and without sharp features.
+TEST(McCsgApi, FacePatchMapNamesTheInputOfEachFace)
+{
+  const Mesh a = BI::test::make_box<Mesh>(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh b = BI::test::make_box<Mesh>(Point(0.6, 0.2, 0.3), Point(1.7, 0.8, 0.9));
+  const BI::Regular_lattice_3 lattice =
+      BI::Regular_lattice_3::enclosing_with_cells(CGAL::Bbox_3(0, 0, 0, 1.7, 1, 1), 34);
+  for(bool sharp : {false, true})
+  {
+    SCOPED_TRACE(sharp);
+    Mesh out;
+    auto patch = out.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 99).first;
+    BI::marching_cubes_csg(lattice, std::vector<Mesh>{a, b}, BI::Boolean_expression::union_of(2), out,
+                           BI::parameters::sharp_features(sharp).face_patch_map(patch));
+    ASSERT_GT(out.number_of_faces(), 100u);
+    std::size_t checked[2] = {0, 0};
+    for(const Mesh::Face_index f : out.faces())
+    {
+      ASSERT_LT(patch[f], 2u);
+      Point c = CGAL::centroid(out.point(out.target(out.halfedge(f))),
+                               out.point(out.target(out.next(out.halfedge(f)))),
+                               out.point(out.source(out.halfedge(f))));
+      if(c.x() < 0.5)
+      {
+        EXPECT_EQ(patch[f], 0u) << c;
+        ++checked[0];
+      }
+      else if(c.x() > 1.1)
+      {
+        EXPECT_EQ(patch[f], 1u) << c;
+        ++checked[1];
+      }
+    }
+    EXPECT_GT(checked[0], 50u);
+    EXPECT_GT(checked[1], 50u);
+  }
+}
+
 TEST(McCsgApi, PolyhedronInputGivesTheSameOutput)
 {
   typedef CGAL::Polyhedron_3<Epick> Polyhedron;

@@ -281,6 +281,16 @@ public:
     std::size_t size() const { return m_last - m_first; }
     bool empty() const { return m_first == m_last; }
     Stored_line operator[](std::size_t k) const { return m_c->stored_line(m_axis, m_first + k); }
+    /// The u index of the k-th line (what a search by u reads).
+    std::size_t u(std::size_t k) const { return m_c->m_lines[m_axis][m_first + k].u; }
+    /// The first k in [from, size()) whose line has u index `u` or more.
+    std::size_t lower_bound(std::size_t u, std::size_t from = 0) const
+    {
+      const Line_entry* base = m_c->m_lines[m_axis].data() + m_first;
+      return std::size_t(std::lower_bound(base + from, base + size(), u,
+                                          [](const Line_entry& e, std::size_t value) { return e.u < value; }) -
+                         base);
+    }
 
   private:
     const Lattice_classifier_3* m_c;

@@ -199,6 +199,13 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
  *     \cgalParamDescription{receives `true` for every corner vertex of the output}
  *     \cgalParamType{a `WritablePropertyMap` from `vertex_descriptor` to `bool`} \cgalParamDefault{none}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{face_patch_map}
+ *     \cgalParamDescription{receives, for every face, the input mesh (variable of `expression`) whose surface
+ *       it lies on: the mesh of the crossings its vertices are on, by majority (a face across the curve where
+ *       two meshes meet takes the mesh of two of its vertices; one with a single edge vertex, around a
+ *       feature vertex, takes that vertex's mesh)}
+ *     \cgalParamType{a `WritablePropertyMap` from `face_descriptor` to an integer type} \cgalParamDefault{none}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{max_memory_bytes}
  *     \cgalParamDescription{refuse to start when the estimated memory exceeds it}
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{8 GiB}
@@ -219,12 +226,15 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
       typename boost::property_map<MutableFaceGraph, CGAL::vertex_point_t>::type>::value_type Point;
   typedef boost::graph_traits<MutableFaceGraph> Graph_traits;
   typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
-  std::vector<Point> points;
+  constexpr bool with_face_patches =
+      !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::face_patch_t>::value;
+  std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 3>> triangles;
-  Marching_cubes_csg_features features;
+  internal::Csg_features features;
+  features.record_vertex_meshes = with_face_patches;
   const auto start = std::chrono::steady_clock::now();
-  Marching_cubes_csg_statistics statistics = marching_cubes_csg<ConcurrencyTag>(
-      lattice, meshes, expression, points, triangles, parameters::sharp_feature_output(&features, np));
+  Marching_cubes_csg_statistics statistics =
+      internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, points, triangles, features, np);
   internal::clear_output_mesh(output);
   // As PMP::polygon_soup_to_polygon_mesh(), keeping the vertex of each point
   // for the feature maps.
@@ -238,15 +248,19 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
   for(std::size_t i = 0; i < points.size(); ++i)
   {
     vertex[i] = add_vertex(output);
-    put(vpm, vertex[i], points[i]);
+    put(vpm, vertex[i], internal::make_output_point<Point>(points[i]));
   }
   std::vector<vertex_descriptor> face(3);
   for(const std::array<std::size_t, 3>& t : triangles)
   {
     for(int v = 0; v < 3; ++v)
       face[v] = vertex[t[v]];
-    if(CGAL::Euler::add_face(face, output) == Graph_traits::null_face())
+    const auto f = CGAL::Euler::add_face(face, output);
+    if(f == Graph_traits::null_face())
       throw std::logic_error("marching_cubes_csg: the output soup is not a 2-manifold (this is a bug)");
+    if constexpr(with_face_patches)
+      put(parameters::get_parameter(np, CGAL::internal_np::face_patch), f,
+          internal::face_mesh(features.vertex_meshes, t));
   }
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
   {
@@ -267,6 +281,7 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
   statistics.seconds_triangulation += internal::seconds_since(start) - statistics.seconds_classification -
                                       statistics.seconds_edges - statistics.seconds_triangulation;
   statistics.seconds = internal::seconds_since(start);
+  internal::progress_of(np).report(1.0);
   return statistics;
 }
 

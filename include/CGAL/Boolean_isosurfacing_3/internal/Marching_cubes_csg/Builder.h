@@ -101,12 +101,28 @@ std::size_t concurrency()
   return 1;
 }
 
+// The input mesh of a triangle: the mesh of most of its vertices (a
+// feature vertex, labelled 255, does not vote).
+inline std::size_t face_mesh(const std::vector<std::uint8_t>& vertex_meshes, const std::array<std::size_t, 3>& t)
+{
+  const std::uint8_t a = vertex_meshes[t[0]], b = vertex_meshes[t[1]], c = vertex_meshes[t[2]];
+  if(a == b || a == c)
+    return a != 255 ? a : (b != 255 ? b : c);
+  if(b == c)
+    return b != 255 ? b : a;
+  // Three different labels: the first known one.
+  return a != 255 ? a : (b != 255 ? b : c);
+}
+
 // The crease edges (vertex pairs, smaller index first) and corner vertices
-// of a soup.
+// of a soup, and (when asked for) the input mesh of each vertex (255 for a
+// feature vertex, which lies on several).
 struct Csg_features
 {
   std::vector<std::array<std::size_t, 2>> crease_edges;
   std::vector<std::size_t> corner_vertices;
+  bool record_vertex_meshes = false;
+  std::vector<std::uint8_t> vertex_meshes;
 };
 
 // The phases after the classification: output states, vertices, cubes.
@@ -170,9 +186,16 @@ public:
     points.resize(m_vertex_offset[nz]);
     if(m_features.enabled)
       m_normals.resize(points.size());
+    if(m_vertex_meshes != nullptr)
+      m_vertex_meshes->assign(points.size(), no_mesh);
     concurrent_for<ConcurrencyTag>(
         nz, [&](std::size_t k) { vertices_of_plane(k, points); }, progress);
   }
+
+  // compute_vertices() will write into `meshes` the input mesh of each edge
+  // vertex (the mesh of the crossing it is on); the face labels of the output.
+  void record_vertex_meshes(std::vector<std::uint8_t>& meshes) { m_vertex_meshes = &meshes; }
+  static constexpr std::uint8_t no_mesh = 255;
 
   // The edge ids 3 * (i + nx * j) + axis of the vertices of plane k, in
   // vertex order (for the welding of slab ranges).
@@ -573,12 +596,21 @@ private:
     Line_cursor(const Lattice_classifier_3& classifier, int axis, std::size_t row)
       : m_lines(classifier.stored_lines(axis, row))
     {}
-    // The crossings of the line at `u` on the edge ending at point `index`.
+    // The crossings of the line at `u` on the edge ending at point `index`;
+    // `u` never decreases from call to call.
     Lattice_classifier_3::Crossing_range edge(std::size_t u, std::uint32_t index)
     {
-      while(m_at < m_lines.size() && m_lines[m_at].u < u)
-        ++m_at;
-      if(m_at == m_lines.size() || m_lines[m_at].u != u)
+      // A few steps, then a binary search: a row of points uses a few of the
+      // plane's lines, far apart.
+      for(int step = 0; m_at < m_lines.size() && m_lines.u(m_at) < u; ++step)
+        if(step < 4)
+          ++m_at;
+        else
+        {
+          m_at = m_lines.lower_bound(u, m_at);
+          break;
+        }
+      if(m_at == m_lines.size() || m_lines.u(m_at) != u)
         return Lattice_classifier_3::Crossing_range();
       const Lattice_classifier_3::Crossing_range line = m_lines[m_at].crossings;
       const Lattice_crossing* first = std::lower_bound(
@@ -643,7 +675,8 @@ private:
           }
         }
         points[id] = vertex_position(crossings, i, j, k, axis, from_low, inside_mask,
-                                     m_features.enabled ? &m_normals[id] : nullptr);
+                                     m_features.enabled ? &m_normals[id] : nullptr,
+                                     m_vertex_meshes != nullptr ? &(*m_vertex_meshes)[id] : nullptr);
       }
     }
   }
@@ -653,7 +686,7 @@ private:
   // input triangle it lies on.
   std::array<double, 3> vertex_position(const Lattice_classifier_3::Crossing_range& crossings, std::size_t i,
                                         std::size_t j, std::size_t k, int axis, bool from_low, std::uint64_t mask,
-                                        Vector_3d* normal) const
+                                        Vector_3d* normal, std::uint8_t* mesh) const
   {
     const std::size_t c = csg_edge_crossing(crossings.begin(), crossings.size(), from_low, mask, m_inside);
     if(c == crossings.size())
@@ -663,6 +696,8 @@ private:
     p[axis] = crossings[c].position;
     if(normal != nullptr)
       *normal = Marching_cubes_csg::outward_normal(m_tangents[crossings[c].triangle], axis, from_low);
+    if(mesh != nullptr)
+      *mesh = std::uint8_t(crossings[c].mesh);
     return p;
   }
 
@@ -790,6 +825,7 @@ private:
   Feature_settings m_features;
   const std::vector<Triangle_tangent>& m_tangents;
   std::vector<Vector_3d> m_normals; // outward normal of each edge vertex (features only)
+  std::vector<std::uint8_t>* m_vertex_meshes = nullptr;
   bool m_empty_state;               // the state of a point inside no mesh
 };
 
@@ -913,7 +949,10 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   start = std::chrono::steady_clock::now();
   points.clear();
   triangles.clear();
+  const bool record_meshes = soup_features.record_vertex_meshes;
   soup_features = Csg_features();
+  if(record_meshes)
+    builder.record_vertex_meshes(soup_features.vertex_meshes);
   builder.compute_vertices(points, progress.part(0.65, 0.8));
   const std::size_t edge_vertices = points.size();
   statistics.seconds_edges = seconds_yz + seconds_since(start);
@@ -933,10 +972,12 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
                                         statistics, progress.part(0.8, 0.98));
     else
       builder.compute_plain_triangles(work, progress.part(0.8, 0.98));
+    if(record_meshes)
+      soup_features.vertex_meshes.resize(points.size(), Builder::no_mesh); // the feature vertices
     if(sliver > 0)
-      statistics.collapsed_edges =
-          Marching_cubes_csg::collapse_short_edges(points, work, edge_vertices, sliver * lattice.spacing(),
-                                                   soup_features.crease_edges, soup_features.corner_vertices);
+      statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges(
+          points, work, edge_vertices, sliver * lattice.spacing(), soup_features.crease_edges,
+          soup_features.corner_vertices, record_meshes ? &soup_features.vertex_meshes : nullptr);
     if constexpr(std::is_same<Triangle, std::array<std::size_t, 3>>::value)
       triangles.swap(work);
     else

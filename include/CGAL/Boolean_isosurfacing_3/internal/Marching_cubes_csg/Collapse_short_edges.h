@@ -39,12 +39,14 @@ namespace Marching_cubes_csg {
 constexpr int max_collapse_passes = 4;
 
 /// One pass of `collapse_short_edges()`: each vertex takes part in at most
-/// one collapse.  `first_feature_vertex` is updated with the renumbering.
+/// one collapse.  `first_feature_vertex` is updated with the renumbering, and
+/// `labels` (one per point, if not null) is compacted with the points.
 inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
                                              std::vector<std::array<std::size_t, 3>>& triangles,
                                              std::size_t& first_feature_vertex, double max_length,
                                              std::vector<std::array<std::size_t, 2>>& creases,
-                                             std::vector<std::size_t>& corners)
+                                             std::vector<std::size_t>& corners,
+                                             std::vector<std::uint8_t>* labels = nullptr)
 {
   typedef std::array<std::size_t, 2> Edge;
   const double max_squared = max_length * max_length;
@@ -167,9 +169,15 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
   {
     new_index[v] = next;
     if(touched[v] != 2)
+    {
+      if(labels != nullptr)
+        (*labels)[next] = (*labels)[v];
       points[next++] = points[v];
+    }
   }
   points.resize(next);
+  if(labels != nullptr)
+    labels->resize(next);
   std::size_t out = 0;
   for(std::size_t t = 0; t < triangles.size(); ++t)
     if(!deleted[t])
@@ -196,17 +204,19 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
 /// collapse something: a vertex next to a lattice point often ends two
 /// short edges, and one pass moves each vertex once.  Then the remaining
 /// slivers are flipped away where the surface is nearly flat
-/// (`flip_slivers()`, the crease edges kept).
+/// (`flip_slivers()`, the crease edges kept).  `labels` (one per point, if
+/// not null) follows the renumbering.
 inline std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<std::array<std::size_t, 3>>& triangles,
                                         std::size_t first_feature_vertex, double max_length,
                                         std::vector<std::array<std::size_t, 2>>& creases,
-                                        std::vector<std::size_t>& corners)
+                                        std::vector<std::size_t>& corners,
+                                        std::vector<std::uint8_t>* labels = nullptr)
 {
   std::size_t total = 0;
   for(int pass = 0; pass < max_collapse_passes; ++pass)
   {
     const std::size_t collapses =
-        collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, creases, corners);
+        collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, creases, corners, labels);
     total += collapses;
     if(collapses == 0)
       break;
