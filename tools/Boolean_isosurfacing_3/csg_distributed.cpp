@@ -1,16 +1,19 @@
 // csg --distributed: Marching Cubes CSG on the ranks of MPI_COMM_WORLD, started by
 //
-//   mpirun -np K csg --distributed --no-features A B ... (--op OP | --expr TEXT) (--cells N | --spacing h) -o OUT.off
+//   mpirun -np K csg --distributed --no-features A B ... (--op OP | --expr TEXT) (--cells N | --spacing h)
+//          [--max-memory G] -o OUT.off|OUT.obj|OUT.ply
 //
 // Every rank reads the meshes and classifies only the lattice lines of its
-// z slab range; the ranks weld through lattice-edge ids and write OUT.off
-// collectively, byte for byte the file `csg --no-features ... -o OUT.off`
-// writes in one process (sharp features are not distributed yet).  The options are csg's
+// z slab range; the ranks weld through lattice-edge ids and write OUT
+// collectively, byte for byte the file `csg --no-features ... -o OUT`
+// writes in one process (sharp features are not distributed: see
+// doc/Boolean_isosurfacing_3/distributed.md for why and what it would take).  The options are csg's
 // (csg_options.h), the MPI frame mpi_driver.h's.  Only rank 0 prints; an error is one line on stderr (rank 0) and
 // a non-zero exit on every rank.  See doc/Boolean_isosurfacing_3/distributed.md.
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/MPI/distributed_marching_cubes_csg.h>
+#include <CGAL/Boolean_isosurfacing_3/result_bounding_box.h>
 
 #include "csg_options.h"
 #include "kernels.h"
@@ -40,11 +43,10 @@ void check_distributed_options(biso_tools::Tool& tool, Options& o, const csg_too
 {
   csg_tool::check_options(tool, o, t);
   const CLI::App& app = tool.app();
-  for(const char* flag : {"--demo", "--creases", "--corners", "--strict", "--unbounded", "--feature-angle",
-                          "--max-memory"})
+  for(const char* flag : {"--demo", "--creases", "--corners", "--strict", "--unbounded", "--feature-angle"})
     if(app.count(flag))
       throw Usage_error(std::string("--distributed: unsupported option ") + flag +
-                        " (--op, --expr, --cells, --spacing, --threads, --no-features, -o)");
+                        " (--op, --expr, --cells, --spacing, --threads, --max-memory, --no-features, -o)");
   if(o.files.empty())
     throw Usage_error("no input file");
   if(o.have_op == o.have_expression)
@@ -58,20 +60,34 @@ void check_distributed_options(biso_tools::Tool& tool, Options& o, const csg_too
   if(o.features)
     throw Usage_error("--distributed computes plain Marching Cubes only: add --no-features (the output is then "
                       "byte for byte the one of csg --no-features)");
-  if(biso_tools::extension(o.output) != "off")
-    throw Usage_error("--distributed writes an OFF file: give -o OUT.off");
+  const std::string format = biso_tools::extension(o.output);
+  if(format != "off" && format != "obj" && format != "ply")
+    throw Usage_error("--distributed writes OFF, OBJ or binary PLY: give -o OUT.off, OUT.obj or OUT.ply");
   // One thread per rank unless --threads.
   o.parallel = app.count("--threads") > 0 && tool.parallel();
 }
 
-// The lattice of csg.cpp's run_csg(), which the byte-identity tests check:
-// the library's enclosing lattice (its default offset keeps the box's faces
-// off the lattice planes).
-BI::Regular_lattice_3 csg_lattice(const std::vector<Mesh>& meshes, const Options& o)
+// The lattice of csg.cpp's run() and run_csg(), which the byte-identity
+// tests check: the library's enclosing lattice (its default offset keeps the
+// box's faces off the lattice planes) of the box where the result can be
+// (`result_bounding_box()`), or of all the inputs' box when it cannot be
+// anywhere.  An unbounded result is refused: csg clips it with an extra box
+// mesh, which is not distributed.
+BI::Regular_lattice_3 csg_lattice(const std::vector<Mesh>& meshes, const BI::Boolean_expression& expression,
+                                  const Options& o)
 {
-  CGAL::Bbox_3 box;
+  if(expression.evaluate(0))
+    throw BI::Invalid_input_error("--distributed: the result is unbounded (the expression holds outside every "
+                                  "input); csg clips it to a box, which --distributed does not do");
+  std::vector<CGAL::Bbox_3> boxes;
+  CGAL::Bbox_3 all;
   for(const Mesh& m : meshes)
-    box += PMP::bbox(m);
+  {
+    boxes.push_back(PMP::bbox(m));
+    all += boxes.back();
+  }
+  const BI::Result_bounding_box result = BI::result_bounding_box(expression, boxes);
+  const CGAL::Bbox_3 box = result.bounded && !result.empty ? result.box : all;
   return o.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, o.cells)
                      : BI::Regular_lattice_3::enclosing(box, o.spacing);
 }
@@ -118,7 +134,7 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
       throw BI::Invalid_input_error(o.files[i] + ": " + e.what());
     }
   const BI::Boolean_expression expression = csg_tool::expression_from(o, meshes.size());
-  const BI::Regular_lattice_3 lattice = csg_lattice(meshes, o);
+  const BI::Regular_lattice_3 lattice = csg_lattice(meshes, expression, o);
   const auto& n = lattice.number_of_points();
   std::fprintf(out, "csg %s over %zu meshes on %d rank%s\n", expression.to_string().c_str(), meshes.size(), size,
                size == 1 ? "" : "s");
@@ -127,12 +143,16 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
   std::fflush(out);
   MPI_Barrier(MPI_COMM_WORLD);
   const double start = MPI_Wtime();
+  // --max-memory bounds each rank's estimate (its slab range), not the whole lattice's.
+  const std::size_t max_memory = o.max_memory_gib > 0 ? std::size_t(o.max_memory_gib * double(std::size_t(1) << 30))
+                                                      : BI::Lattice_classifier_3::default_max_memory_bytes;
+  const auto np = BI::parameters::max_memory_bytes(max_memory);
   const BI::Marching_cubes_csg_distributed_statistics s =
       o.parallel
           ? BI::marching_cubes_csg_distributed<CGAL::Parallel_if_available_tag>(MPI_COMM_WORLD, lattice, meshes,
-                                                                                 expression, o.output)
+                                                                                 expression, o.output, np)
           : BI::marching_cubes_csg_distributed<CGAL::Sequential_tag>(MPI_COMM_WORLD, lattice, meshes, expression,
-                                                                      o.output);
+                                                                      o.output, np);
   const double total = MPI_Wtime() - start;
   tool.stage("extraction", "extracted, welded and wrote " + std::to_string(s.number_of_faces) + " triangles",
              total);

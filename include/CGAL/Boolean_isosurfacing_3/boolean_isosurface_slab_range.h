@@ -123,11 +123,16 @@ struct Boolean_isosurface_slab_range
 
   /// Cube layers `[first_layer, last_layer)` of a grid of `number_of_layers`.
   std::size_t first_layer = 0, last_layer = 0, number_of_layers = 0;
+  /// The local vertices, in local order (empty when the range was streamed
+  /// to a sink by `stream_boolean_isosurface_slab_range()`).
   std::vector<std::array<double, 3>> points;
-  /// Polygon p has the local vertices `polygon_vertices[polygon_begin[p] .. polygon_begin[p + 1])`.
+  /// Polygon p has the local vertices `polygon_vertices[polygon_begin[p] .. polygon_begin[p + 1])`
+  /// (empty when streamed, as `points`).
   std::vector<std::size_t> polygon_begin{0};
   std::vector<std::size_t> polygon_vertices;
   std::vector<int> labels;
+  /// The number of local vertices and of polygons (also when streamed).
+  std::size_t vertex_count = 0, polygon_count = 0;
   /// The vertices whose carrier lies in vertex layer `first_layer` (empty
   /// when `first_layer == 0`), and those in vertex layer `last_layer` (empty
   /// for the last range): local indices, non-decreasing, and their keys
@@ -146,7 +151,8 @@ struct Boolean_isosurface_slab_range
   /// The message from below the range was extracted with (empty if none).
   std::vector<std::uint64_t> message_used;
 
-  std::size_t number_of_polygons() const { return labels.size(); }
+  std::size_t number_of_vertices() const { return vertex_count; }
+  std::size_t number_of_polygons() const { return polygon_count; }
 };
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
@@ -161,7 +167,7 @@ inline std::vector<std::uint64_t> top_layer_message(const Boolean_isosurface_sla
       range.bottom_vertices.empty() || range.top_vertices.empty() ||
       *std::min_element(range.top_vertices.begin(), range.top_vertices.end()) >
           *std::max_element(range.bottom_vertices.begin(), range.bottom_vertices.end());
-  std::vector<std::uint64_t> message{std::uint64_t(range.points.size()), std::uint64_t(top_follows_bottom),
+  std::vector<std::uint64_t> message{std::uint64_t(range.number_of_vertices()), std::uint64_t(top_follows_bottom),
                                      std::uint64_t(range.top_vertices.size())};
   message.insert(message.end(), range.top_vertices.begin(), range.top_vertices.end());
   message.insert(message.end(), range.top_keys.begin(), range.top_keys.end());
@@ -238,7 +244,7 @@ match_boolean_isosurface_slab_range(const Boolean_isosurface_slab_range& range,
         welding.below_match[b] = found->second;
         // A vertex listed with several keys is one vertex, matched once.
         if(is_matched.empty())
-          is_matched.assign(range.points.size(), welding.no_match);
+          is_matched.assign(range.number_of_vertices(), welding.no_match);
         std::size_t& match = is_matched[range.bottom_vertices[b]];
         if(match == welding.no_match)
           ++matched;
@@ -248,7 +254,7 @@ match_boolean_isosurface_slab_range(const Boolean_isosurface_slab_range& range,
       }
     }
   }
-  welding.number_of_new_vertices = range.points.size() - matched;
+  welding.number_of_new_vertices = range.number_of_vertices() - matched;
   return welding;
 }
 
@@ -261,7 +267,7 @@ inline std::vector<std::size_t> global_vertex_indices(const Boolean_isosurface_s
                                                       const Boolean_isosurface_slab_range_welding& welding,
                                                       std::size_t offset)
 {
-  std::vector<std::size_t> global(range.points.size(), welding.no_match);
+  std::vector<std::size_t> global(range.number_of_vertices(), welding.no_match);
   // The range below numbered its new vertices offset - new_below ...; its
   // local vertex l (after all its bottom ones) is offset - n_below + l.
   for(std::size_t b = 0; b < range.bottom_vertices.size(); ++b)
@@ -324,10 +330,10 @@ inline Tbiso_vertex_key key_from_words(const std::uint64_t* w)
 // the range below has looks up "tag | its local index below", so weld_chunk()
 // takes exactly the single-process decisions; such a vertex still gets a
 // local point, at its place in the local order, and is listed with its keys.
-template <typename ConcurrencyTag, typename GeomTraits, typename FieldSource, typename NamedParameters>
+template <typename ConcurrencyTag, typename GeomTraits, typename FieldSource, typename Sink, typename NamedParameters>
 void extract_slab_range(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource& source,
                         const Boolean_expression& expression, std::size_t first_layer, std::size_t last_layer,
-                        const std::vector<std::uint64_t>* message, Boolean_isosurface_slab_range& range,
+                        const std::vector<std::uint64_t>* message, Sink& sink, Boolean_isosurface_slab_range& range,
                         const NamedParameters& np)
 {
   using parameters::choose_parameter;
@@ -390,7 +396,8 @@ void extract_slab_range(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource&
     slot.values.reserve(((std::min)(slab, last_layer - first_layer) + 3) * layer_size * N);
   std::unordered_map<Key, std::size_t, Tbiso_vertex_key_hash> below, above;
   std::unordered_map<std::size_t, std::size_t> tag_to_local;
-  std::size_t next_index = 0; // == range.points.size()
+  std::size_t next_index = 0; // the points given to the sink
+  std::vector<std::size_t> local; // one polygon's local vertices
   std::vector<std::array<double, 3>> bottom_points;
 
   for(std::size_t s0 = 0; s0 < number_of_slabs; s0 += slots.size())
@@ -453,10 +460,10 @@ void extract_slab_range(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource&
           [&](const Key& key, std::size_t index) {
             if(index != no_index && (index & tag) != 0)
             {
-              const auto inserted = tag_to_local.emplace(index, range.points.size());
+              const auto inserted = tag_to_local.emplace(index, next_index);
               if(inserted.second)
               {
-                range.points.push_back(chunk.points[chunk.index.at(key)]);
+                sink.add_point(chunk.points[chunk.index.at(key)]);
                 ++next_index;
               }
               index = inserted.first->second;
@@ -478,19 +485,34 @@ void extract_slab_range(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource&
               }
             }
           },
-          next_index, [&](const std::array<double, 3>& p) { range.points.push_back(p); },
+          next_index, [&](const std::array<double, 3>& p) { sink.add_point(p); },
           [&](const std::size_t* v, std::size_t size, int label, int) {
+            local.clear();
             for(std::size_t k = 0; k < size; ++k)
-              range.polygon_vertices.push_back((v[k] & tag) != 0 ? tag_to_local.at(v[k]) : v[k]);
-            range.polygon_begin.push_back(range.polygon_vertices.size());
-            range.labels.push_back(label);
+              local.push_back((v[k] & tag) != 0 ? tag_to_local.at(v[k]) : v[k]);
+            sink.add_polygon(local.data(), size, label);
+            ++range.polygon_count;
           });
       below.swap(above);
       tag_to_local.clear();
       chunk = Tbiso_chunk();
     }
   }
+  range.vertex_count = next_index;
 }
+
+// The sink of the overloads that keep the range's surface in `range`.
+struct Slab_range_sink
+{
+  Boolean_isosurface_slab_range& range;
+  void add_point(const std::array<double, 3>& p) { range.points.push_back(p); }
+  void add_polygon(const std::size_t* v, std::size_t n, int label)
+  {
+    range.polygon_vertices.insert(range.polygon_vertices.end(), v, v + n);
+    range.polygon_begin.push_back(range.polygon_vertices.size());
+    range.labels.push_back(label);
+  }
+};
 
 } // namespace internal
 
@@ -543,7 +565,9 @@ void extract_boolean_isosurface_slab_range(const Tetrahedral_grid_3<GeomTraits>&
                                            std::size_t last_layer, Boolean_isosurface_slab_range& range,
                                            const NamedParameters& np = CGAL::parameters::default_values())
 {
-  internal::extract_slab_range<ConcurrencyTag>(grid, source, expression, first_layer, last_layer, nullptr, range, np);
+  internal::Slab_range_sink sink{range};
+  internal::extract_slab_range<ConcurrencyTag>(grid, source, expression, first_layer, last_layer, nullptr, sink, range,
+                                               np);
 }
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
@@ -564,8 +588,39 @@ void extract_boolean_isosurface_slab_range(const Tetrahedral_grid_3<GeomTraits>&
                                            Boolean_isosurface_slab_range& range,
                                            const NamedParameters& np = CGAL::parameters::default_values())
 {
+  internal::Slab_range_sink sink{range};
   internal::extract_slab_range<ConcurrencyTag>(grid, source, expression, first_layer, last_layer, &message_from_below,
-                                               range, np);
+                                               sink, range, np);
+}
+
+/// \ingroup PkgBooleanIsosurfacing3Ref
+/// As `extract_boolean_isosurface_slab_range()`, but the range's points and
+/// polygons (local numbers, local order) go to `sink` as they are welded,
+/// one slab at a time, instead of into `range`: `range` keeps only the
+/// counts (`vertex_count`, `polygon_count`) and the bottom- and top-layer
+/// vertices with their keys, all that the welding with the neighbours needs.
+/// So memory is a few slabs of field values and of surface, whatever the
+/// size of the range: `extract_boolean_isosurface_distributed()` streams to
+/// a temporary file and renumbers while it copies to the output.
+///
+/// \param message_from_below null, or the `top_layer_message()` of the range
+///        just below (as the second overload of `extract_boolean_isosurface_slab_range()`)
+/// \param sink receives the surface, a model of `BooleanIsosurfaceSink`
+///
+/// The other parameters, the named parameters and the exceptions are those of
+/// `extract_boolean_isosurface_slab_range()`.  If the result
+/// `depends_on_below`, what went to `sink` must be discarded and the range
+/// streamed again with the message.
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename FieldSource, typename Sink,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void stream_boolean_isosurface_slab_range(const Tetrahedral_grid_3<GeomTraits>& grid, FieldSource& source,
+                                          const Boolean_expression& expression, std::size_t first_layer,
+                                          std::size_t last_layer, const std::vector<std::uint64_t>* message_from_below,
+                                          Sink& sink, Boolean_isosurface_slab_range& range,
+                                          const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::extract_slab_range<ConcurrencyTag>(grid, source, expression, first_layer, last_layer, message_from_below,
+                                               sink, range, np);
 }
 
 } // namespace Boolean_isosurfacing

@@ -29,8 +29,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -119,6 +125,153 @@ private:
   double m_seconds = 0;
 };
 
+namespace internal {
+
+// Where a rank's surface waits for the prefix sums: two temporary files next
+// to the output, `OUT.rank<r>.points` (the PLY vertex records, in local
+// order) and `OUT.rank<r>.faces` (per polygon: the vertex count as one byte,
+// the local indices as uint32, the label as int32, host byte order), so that
+// a rank holds a few slabs of surface instead of its whole share.  Removed
+// on destruction.
+class Spilled_slab_range
+{
+public:
+  Spilled_slab_range(const std::string& output, int rank)
+    : m_points_name(output + ".rank" + std::to_string(rank) + ".points"),
+      m_faces_name(output + ".rank" + std::to_string(rank) + ".faces")
+  {
+    reset();
+  }
+  Spilled_slab_range(const Spilled_slab_range&) = delete;
+  Spilled_slab_range& operator=(const Spilled_slab_range&) = delete;
+  ~Spilled_slab_range()
+  {
+    m_points.close();
+    m_faces.close();
+    std::remove(m_points_name.c_str());
+    std::remove(m_faces_name.c_str());
+  }
+
+  /// Empties both files (a range extracted again starts over).
+  void reset()
+  {
+    m_points.close();
+    m_faces.close();
+    m_points.open(m_points_name, std::ios::binary | std::ios::trunc);
+    m_faces.open(m_faces_name, std::ios::binary | std::ios::trunc);
+    if(!m_points || !m_faces)
+      throw std::runtime_error("cannot write the temporary file '" + m_points_name + "' (next to the output)");
+    m_point_buffer.clear();
+    m_face_buffer.clear();
+    m_corners = 0;
+  }
+
+  // BooleanIsosurfaceSink
+  void add_point(const std::array<double, 3>& p)
+  {
+    IO::Boolean_isosurface_PLY_stream::append_point(m_point_buffer, p);
+    flush(m_points, m_point_buffer, false);
+  }
+  void add_polygon(const std::size_t* v, std::size_t n, int label)
+  {
+    if(n > 255)
+      throw Invalid_input_error("a polygon of " + std::to_string(n) + " vertices does not fit a PLY uchar list");
+    m_face_buffer.push_back(char(n));
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      if(v[k] > std::size_t((std::numeric_limits<std::int32_t>::max)()))
+        throw Invalid_input_error("too many points for PLY int indices");
+      append(std::uint32_t(v[k]));
+    }
+    append(std::int32_t(label));
+    m_corners += n;
+    flush(m_faces, m_face_buffer, false);
+  }
+
+  /// Flushes and closes the files for reading.
+  void finish()
+  {
+    flush(m_points, m_point_buffer, true);
+    flush(m_faces, m_face_buffer, true);
+    m_points.close();
+    m_faces.close();
+    if(!m_points || !m_faces)
+      throw std::runtime_error("failed writing the temporary file '" + m_points_name + "'");
+  }
+
+  /// The vertex indices of all polygons so far.
+  std::uint64_t number_of_corners() const { return m_corners; }
+  const std::string& points_name() const { return m_points_name; }
+  const std::string& faces_name() const { return m_faces_name; }
+
+private:
+  template <typename T>
+  void append(T value)
+  {
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    m_face_buffer.append(bytes, sizeof(T));
+  }
+  static void flush(std::ofstream& out, std::string& buffer, bool always)
+  {
+    if(always || buffer.size() >= (std::size_t(1) << 20))
+    {
+      out.write(buffer.data(), std::streamsize(buffer.size()));
+      buffer.clear();
+    }
+  }
+
+  std::string m_points_name, m_faces_name;
+  std::ofstream m_points, m_faces;
+  std::string m_point_buffer, m_face_buffer;
+  std::uint64_t m_corners = 0;
+};
+
+// Local vertex index -> global index without a table of all local vertices:
+// the matched bottom-layer vertices take the indices of the range below, and
+// the others `offset, offset + 1, ...` in local order (global_vertex_indices()).
+class Slab_range_renumbering
+{
+public:
+  Slab_range_renumbering(const Boolean_isosurface_slab_range& range,
+                         const Boolean_isosurface_slab_range_welding& welding, std::size_t offset)
+    : m_offset(offset)
+  {
+    for(std::size_t b = 0; b < range.bottom_vertices.size(); ++b)
+      if(welding.below_match[b] != welding.no_match)
+        m_matched.emplace_back(range.bottom_vertices[b], offset - welding.below_vertices + welding.below_match[b]);
+    std::sort(m_matched.begin(), m_matched.end());
+    m_matched.erase(std::unique(m_matched.begin(), m_matched.end()), m_matched.end());
+  }
+
+  bool is_new(std::size_t local) const { return find(local) == m_matched.end(); }
+
+  std::size_t operator()(std::size_t local) const
+  {
+    const auto it = find(local);
+    if(it != m_matched.end())
+      return it->second;
+    return m_offset + local -
+           std::size_t(std::lower_bound(m_matched.begin(), m_matched.end(), std::make_pair(local, std::size_t(0))) -
+                       m_matched.begin());
+  }
+
+private:
+  typedef std::vector<std::pair<std::size_t, std::size_t>> Pairs;
+  Pairs::const_iterator find(std::size_t local) const
+  {
+    if(m_matched.empty() || local > m_matched.back().first)
+      return m_matched.end();
+    const auto it = std::lower_bound(m_matched.begin(), m_matched.end(), std::make_pair(local, std::size_t(0)));
+    return it != m_matched.end() && it->first == local ? it : m_matched.end();
+  }
+
+  std::size_t m_offset;
+  Pairs m_matched; // (local, global), by local
+};
+
+} // namespace internal
+
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// What `extract_boolean_isosurface_distributed()` did: global counts (the
 /// same on every rank) and this rank's share and times.
@@ -197,8 +350,13 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
   const auto call_start = std::chrono::steady_clock::now();
   auto start = call_start;
   Boolean_isosurface_slab_range range;
+  // The rank's surface goes to temporary files as it is welded: memory is
+  // a few slabs, not the rank's share of the surface.
+  std::unique_ptr<internal::Spilled_slab_range> spill;
   mpi::on_all_ranks(comm, [&] {
-    extract_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second, range, np);
+    spill.reset(new internal::Spilled_slab_range(filename, rank));
+    stream_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second, nullptr,
+                                                         *spill, range, np);
   });
   stats.seconds_extraction = internal::seconds_since(start);
 
@@ -233,8 +391,11 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
     const auto again = std::chrono::steady_clock::now();
     mpi::on_all_ranks(comm, [&] {
       if(depth[std::size_t(rank)] == t)
-        extract_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second,
-                                                              from_below, range, np);
+      {
+        spill->reset();
+        stream_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second,
+                                                             &from_below, *spill, range, np);
+      }
     });
     stats.seconds_extraction += internal::seconds_since(again);
   }
@@ -245,7 +406,8 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
   mpi::on_all_ranks(comm, [&] { welding = match_boolean_isosurface_slab_range(range, from_below); });
   std::vector<std::uint64_t>().swap(from_below);
   const std::uint64_t offset = mpi::exclusive_sum(comm, welding.number_of_new_vertices);
-  std::vector<std::size_t> global = global_vertex_indices(range, welding, std::size_t(offset));
+  const internal::Slab_range_renumbering global(range, welding, std::size_t(offset));
+  mpi::on_all_ranks(comm, [&] { spill->finish(); });
   stats.number_of_vertices = std::size_t(mpi::total_sum(comm, welding.number_of_new_vertices));
   stats.number_of_faces = std::size_t(mpi::total_sum(comm, range.number_of_polygons()));
   stats.number_of_evaluated_tetrahedra = std::size_t(mpi::total_sum(comm, range.number_of_evaluated_tetrahedra));
@@ -259,14 +421,28 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
   start = std::chrono::steady_clock::now();
   typedef IO::Boolean_isosurface_PLY_stream Ply;
   const std::string header = Ply::header(stats.number_of_vertices, stats.number_of_faces);
-  std::uint64_t face_bytes = 0;
-  for(std::size_t p = 0; p < range.number_of_polygons(); ++p)
-    face_bytes += 1 + 4 * (range.polygon_begin[p + 1] - range.polygon_begin[p]) + 4 + 3;
+  // A face record: count, indices, label, colour.
+  const std::uint64_t face_bytes = 8 * std::uint64_t(range.number_of_polygons()) + 4 * spill->number_of_corners();
   const std::vector<std::uint64_t> part_bytes{rank == 0 ? header.size() : 0,
                                               24 * std::uint64_t(welding.number_of_new_vertices), face_bytes};
-  const std::size_t piece_records = std::size_t(1) << 20;
+  // Pieces of 64 Ki records (1.5 MB of vertices): the write buffers stay
+  // small next to the slab buffers.
+  const std::size_t piece_records = std::size_t(1) << 16;
+  std::ifstream spilled;
   std::size_t next_vertex = 0, next_polygon = 0;
+  std::vector<char> records;
   std::vector<std::size_t> polygon;
+  auto open = [&](const std::string& name) {
+    spilled.close();
+    spilled.clear();
+    spilled.open(name, std::ios::binary);
+    if(!spilled)
+      throw std::runtime_error("cannot read the temporary file '" + name + "'");
+  };
+  auto read = [&](char* data, std::size_t bytes) {
+    if(!spilled.read(data, std::streamsize(bytes)))
+      throw std::runtime_error("short read in a temporary file next to '" + filename + "'");
+  };
   mpi::write_sections(comm, filename, part_bytes, [&](std::size_t section, std::string& out) {
     if(section == 0)
     {
@@ -276,24 +452,40 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
     }
     if(section == 1)
     {
-      // The new vertices are the local ones with global index >= offset, in order.
-      for(std::size_t done = 0; next_vertex < range.points.size() && done < piece_records; ++next_vertex)
-        if(global[next_vertex] >= offset)
-        {
-          Ply::append_point(out, range.points[next_vertex]);
-          ++done;
-        }
-      return next_vertex < range.points.size();
+      // The new vertices are the local ones not matched below, in order.
+      if(next_vertex == 0)
+        open(spill->points_name());
+      const std::size_t count = (std::min)(piece_records, range.number_of_vertices() - next_vertex);
+      records.resize(24 * count);
+      read(records.data(), records.size());
+      for(std::size_t k = 0; k < count; ++k, ++next_vertex)
+        if(global.is_new(next_vertex))
+          out.append(records.data() + 24 * k, 24);
+      return next_vertex < range.number_of_vertices();
     }
+    if(next_polygon == 0)
+      open(spill->faces_name());
     for(std::size_t done = 0; next_polygon < range.number_of_polygons() && done < piece_records; ++next_polygon, ++done)
     {
-      polygon.clear();
-      for(std::size_t k = range.polygon_begin[next_polygon]; k < range.polygon_begin[next_polygon + 1]; ++k)
-        polygon.push_back(global[range.polygon_vertices[k]]);
-      Ply::append_polygon(out, polygon.data(), polygon.size(), range.labels[next_polygon]);
+      unsigned char n = 0;
+      read(reinterpret_cast<char*>(&n), 1);
+      records.resize(4 * std::size_t(n) + 4);
+      read(records.data(), records.size());
+      polygon.resize(n);
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        std::uint32_t local = 0;
+        std::memcpy(&local, records.data() + 4 * k, 4);
+        polygon[k] = global(local);
+      }
+      std::int32_t label = 0;
+      std::memcpy(&label, records.data() + 4 * std::size_t(n), 4);
+      Ply::append_polygon(out, polygon.data(), polygon.size(), label);
     }
     return next_polygon < range.number_of_polygons();
   });
+  spilled.close();
+  spill.reset();
   stats.seconds_writing = internal::seconds_since(start);
   stats.seconds = internal::seconds_since(call_start);
   return stats;

@@ -9,9 +9,9 @@
 // triangulates only the cube layers `slab_range_of_part(layers, r, K)`
 // (`marching_cubes_csg_slab_range()`); the rank above sends down the edge ids
 // of its first plane's vertices (one message per boundary), an MPI_Exscan of
-// the owned vertex counts gives the offsets, and the OFF file is written
-// collectively -- byte for byte the file CGAL's `write_polygon_mesh()` writes
-// for the single-process `marching_cubes_csg()` output (precision 17).
+// the owned vertex counts gives the offsets, and the output file is written
+// collectively -- byte for byte the file `IO::write_triangle_soup()` writes
+// for the single-process `marching_cubes_csg()` output (OFF, OBJ or binary PLY).
 
 #include <CGAL/Boolean_isosurfacing_3/Algorithm_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/MPI/internal/Mpi_support.h>
@@ -19,15 +19,17 @@
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_slab_range.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg_slab_range.h>
 
-#include <CGAL/IO/OFF/File_writer_OFF.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Byte_order.h>
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <sstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,29 +61,120 @@ struct Marching_cubes_csg_distributed_statistics : Algorithm_statistics
 
 namespace internal {
 
-// The OFF text of CGAL's writer, piece by piece: the same calls
-// `write_polygon_mesh()` makes, on a stream with its precision.
-inline std::ostringstream off_stream()
+// The records of `IO::write_triangle_soup()`'s formats, so that each rank
+// formats its own vertices and triangles: the file is the concatenation of
+// a header (counts), the vertex records and the face records.
+class Soup_file_records
 {
-  std::ostringstream out;
-  out.precision(17);
-  return out;
-}
+public:
+  enum Format { OFF, OBJ, PLY };
+
+  explicit Soup_file_records(const std::string& filename)
+  {
+    using CGAL::Boolean_isosurfacing::internal::ends_with_lowercase;
+    if(ends_with_lowercase(filename, ".off"))
+      m_format = OFF;
+    else if(ends_with_lowercase(filename, ".obj"))
+      m_format = OBJ;
+    else if(ends_with_lowercase(filename, ".ply"))
+      m_format = PLY;
+    else
+      throw Invalid_input_error("marching_cubes_csg_distributed: " + filename +
+                                ": the extension must be .off, .obj or .ply");
+  }
+
+  std::string header(std::size_t vertices, std::size_t faces) const
+  {
+    if(m_format == OFF)
+      return "OFF\n" + std::to_string(vertices) + " " + std::to_string(faces) + " 0\n";
+    if(m_format == PLY)
+      return "ply\nformat binary_little_endian 1.0\ncomment Boolean_isosurfacing_3\nelement vertex " +
+             std::to_string(vertices) +
+             "\nproperty double x\nproperty double y\nproperty double z\nelement face " + std::to_string(faces) +
+             "\nproperty list uchar uint vertex_indices\nend_header\n";
+    return std::string();
+  }
+
+  // The records of points [first, last) appended to `out`.
+  void vertices(std::string& out, const std::array<double, 3>* first, const std::array<double, 3>* last) const
+  {
+    if(m_format == PLY)
+    {
+      for(; first != last; ++first)
+        for(double c : *first)
+          put_little_endian(out, c);
+      return;
+    }
+    IO::internal_io::String_sink sink(out);
+    IO::internal_io::Text_writer<IO::internal_io::String_sink> text(sink);
+    for(; first != last; ++first)
+    {
+      if(m_format == OBJ)
+        text.text("v ");
+      text.number((*first)[0]);
+      text.character(' ');
+      text.number((*first)[1]);
+      text.character(' ');
+      text.number((*first)[2]);
+      text.end_line();
+    }
+  }
+
+  // The records of triangles [first, last) appended to `out`, with the
+  // vertex indices `global(i)`.
+  template <typename Global>
+  void faces(std::string& out, const std::array<std::size_t, 3>* first, const std::array<std::size_t, 3>* last,
+             const Global& global) const
+  {
+    if(m_format == PLY)
+    {
+      for(; first != last; ++first)
+      {
+        put_little_endian(out, std::uint8_t(3));
+        for(std::size_t v : *first)
+        {
+          const std::uint64_t g = global(v);
+          if(g > 0xffffffffu)
+            throw Invalid_input_error("more than 2^32 vertices for PLY uint indices");
+          put_little_endian(out, std::uint32_t(g));
+        }
+      }
+      return;
+    }
+    IO::internal_io::String_sink sink(out);
+    IO::internal_io::Text_writer<IO::internal_io::String_sink> text(sink);
+    const std::uint64_t base = m_format == OBJ ? 1 : 0;
+    for(; first != last; ++first)
+    {
+      text.text(m_format == OBJ ? "f " : "3 ");
+      text.number(std::uint64_t(global((*first)[0])) + base);
+      text.character(' ');
+      text.number(std::uint64_t(global((*first)[1])) + base);
+      text.character(' ');
+      text.number(std::uint64_t(global((*first)[2])) + base);
+      text.end_line();
+    }
+  }
+
+private:
+  Format m_format = OFF;
+};
 
 } // namespace internal
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// Marching Cubes CSG over all ranks of `comm` (each rank passes the same
-/// meshes, expression and lattice), written to the OFF file `filename` as
-/// `CGAL::IO::write_polygon_mesh(filename, mesh, stream_precision(17))`
-/// writes the `Surface_mesh` that `marching_cubes_csg()` returns.
-/// Collective.
+/// meshes, expression and lattice), written to `filename` (`.off`, `.obj` or
+/// `.ply`) as `IO::write_triangle_soup()` writes the soup that
+/// `marching_cubes_csg()` returns, byte for byte.  Each rank keeps its part
+/// of the file in a temporary file next to it (`filename.rank<r>.text`)
+/// until the offsets are known.  Collective.
 ///
 /// \param comm the communicator
 /// \param lattice the whole lattice
 /// \param meshes the closed triangle meshes (the same on every rank)
 /// \param expression a Boolean expression with `meshes.size()` variables
-/// \param filename the output OFF file
+/// \param filename the output file: `.off`, `.obj` or binary `.ply`
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
@@ -112,7 +205,9 @@ marching_cubes_csg_distributed(MPI_Comm comm, const Regular_lattice_3& lattice, 
   const auto call_start = std::chrono::steady_clock::now();
   auto start = call_start;
   Marching_cubes_csg_slab_range range;
+  std::unique_ptr<internal::Soup_file_records> records;
   mpi::on_all_ranks(comm, [&] {
+    records.reset(new internal::Soup_file_records(filename));
     marching_cubes_csg_slab_range<ConcurrencyTag>(lattice, meshes, expression, mine.first, mine.second, range, np);
   });
   stats.seconds_extraction = internal::seconds_since(start);
@@ -167,40 +262,49 @@ marching_cubes_csg_distributed(MPI_Comm comm, const Regular_lattice_3& lattice, 
   MPI_Allreduce(&mine_volume, &stats.volume, 1, MPI_DOUBLE, MPI_SUM, comm);
   stats.seconds_welding = internal::seconds_since(start);
 
-  // The file: [header (rank 0)] [vertex lines] [facet header + ...] [face lines] [footer]
-  // with the facet header and the footer on the last rank.
+  // The file: [header (rank 0)] [vertex records] [face records], each
+  // section the ranks' parts in rank order.  The records are formatted once,
+  // piece by piece, into a temporary file next to the output, and copied
+  // from there once every part's size is known: a rank never holds its
+  // whole part of the text (about 50 bytes per vertex and per triangle).
   start = std::chrono::steady_clock::now();
-  std::vector<std::string> parts(3);
-  {
-    std::ostringstream out = internal::off_stream();
-    CGAL::File_writer_OFF writer;
-    // Every rank binds the writer to its stream; only rank 0 keeps the header.
-    writer.write_header(out, stats.number_of_vertices, 0, stats.number_of_faces);
-    if(rank == 0)
-      parts[0] = out.str();
-    out.str("");
-    for(const std::array<double, 3>& p : range.points)
-      writer.write_vertex(p[0], p[1], p[2]);
-    if(rank == size - 1)
-      writer.write_facet_header();
-    parts[1] = out.str();
-    out.str("");
-    for(std::size_t f = 0; f < range.triangles.size(); ++f)
+  const std::string header = rank == 0 ? records->header(stats.number_of_vertices, stats.number_of_faces) : "";
+  const std::size_t piece_records = std::size_t(1) << 15;
+  std::vector<std::uint64_t> part_bytes{header.size(), 0, 0};
+  std::unique_ptr<mpi::Temporary_file> text;
+  mpi::on_all_ranks(comm, [&] {
+    text.reset(new mpi::Temporary_file(filename + ".rank" + std::to_string(rank) + ".text"));
+    std::string piece;
+    for(std::size_t v = 0; v < range.points.size(); v += piece_records)
     {
-      writer.write_facet_begin(3);
-      for(int v = 0; v < 3; ++v)
-        writer.write_facet_vertex_index(std::size_t(global(range.triangles[f][v])));
-      writer.write_facet_end();
+      piece.clear();
+      const std::size_t end = (std::min)(range.points.size(), v + piece_records);
+      records->vertices(piece, range.points.data() + v, range.points.data() + end);
+      part_bytes[1] += text->append(piece);
     }
-    if(rank == size - 1)
-      writer.write_footer();
-    parts[2] = out.str();
-  }
-  const std::vector<std::uint64_t> part_bytes{parts[0].size(), parts[1].size(), parts[2].size()};
-  mpi::write_sections(comm, filename, part_bytes, [&](std::size_t section, std::string& out) {
-    out.swap(parts[section]);
-    return false;
+    for(std::size_t f = 0; f < range.triangles.size(); f += piece_records)
+    {
+      piece.clear();
+      const std::size_t end = (std::min)(range.triangles.size(), f + piece_records);
+      records->faces(piece, range.triangles.data() + f, range.triangles.data() + end, global);
+      part_bytes[2] += text->append(piece);
+    }
+    text->finish();
   });
+  const std::uint64_t piece_bytes = std::uint64_t(1) << 22;
+  std::vector<std::uint64_t> left = part_bytes;
+  mpi::write_sections(comm, filename, part_bytes, [&](std::size_t section, std::string& piece) {
+    if(section == 0)
+    {
+      piece = header;
+      return false;
+    }
+    const std::uint64_t bytes = (std::min)(left[section], piece_bytes);
+    text->read(piece, std::size_t(bytes));
+    left[section] -= bytes;
+    return left[section] > 0;
+  });
+  text.reset();
   stats.seconds_writing = internal::seconds_since(start);
   stats.seconds = internal::seconds_since(call_start);
   return stats;

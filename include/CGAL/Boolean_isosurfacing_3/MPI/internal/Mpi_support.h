@@ -22,6 +22,8 @@
 #include <climits>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -207,6 +209,57 @@ private:
   MPI_Comm m_comm;
   std::string m_name;
   MPI_File m_file = MPI_FILE_NULL;
+};
+
+// A rank's temporary file: appended to, then read back in order once; removed
+// on destruction.  The drivers keep a rank's part of the output there until
+// the offsets are known, instead of in memory.
+class Temporary_file
+{
+public:
+  explicit Temporary_file(const std::string& name) : m_name(name)
+  {
+    m_out.open(name, std::ios::binary | std::ios::trunc);
+    if(!m_out)
+      throw std::runtime_error("cannot write the temporary file '" + name + "' (next to the output)");
+  }
+  Temporary_file(const Temporary_file&) = delete;
+  Temporary_file& operator=(const Temporary_file&) = delete;
+  ~Temporary_file()
+  {
+    m_out.close();
+    m_in.close();
+    std::remove(m_name.c_str());
+  }
+  /// Appends `bytes`; returns their number.
+  std::size_t append(const std::string& bytes)
+  {
+    m_out.write(bytes.data(), std::streamsize(bytes.size()));
+    return bytes.size();
+  }
+  /// Ends the writing; the reading starts at the beginning.
+  void finish()
+  {
+    m_out.close();
+    if(!m_out)
+      throw std::runtime_error("failed writing the temporary file '" + m_name + "'");
+    m_in.open(m_name, std::ios::binary);
+    if(!m_in)
+      throw std::runtime_error("cannot read the temporary file '" + m_name + "'");
+  }
+  /// Appends the next `bytes` bytes to `out`.
+  void read(std::string& out, std::size_t bytes)
+  {
+    const std::size_t at = out.size();
+    out.resize(at + bytes);
+    if(bytes > 0 && !m_in.read(&out[at], std::streamsize(bytes)))
+      throw std::runtime_error("short read in the temporary file '" + m_name + "'");
+  }
+
+private:
+  std::string m_name;
+  std::ofstream m_out;
+  std::ifstream m_in;
 };
 
 // Writes a file made of sections, each the concatenation of the ranks' parts
