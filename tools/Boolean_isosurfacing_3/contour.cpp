@@ -3,7 +3,7 @@
 // (the contour-tracing assignment, [ContourTracing] in the manual's references).
 //
 //   contour [FILE|-] [-o out.tris|out.off|out.ply|out.obj|out.stl] [--spacing h | --cells N] [--k K]
-//           [--rho R] [--delta D] [--max-jump J]
+//           [--rho R] [--delta D] [--hoppe] [--max-jump J]
 //   and the common options of cli.h (--threads, --sequential, --json, --quiet, --version)
 //
 // FILE: .pts (the seed's format, or Hoppe's A3d points), .xyz, .pwn, .ply;
@@ -52,7 +52,7 @@ using biso_tools::Tool;
 
 const char* description =
     "contour: oriented (or unoriented) point samples -> closed triangle mesh (Hoppe et al. 1992)\n"
-    "usage: contour [FILE|-] [-o OUT] [--spacing h | --cells N] [--k K] [--rho R] [--delta D] [--max-jump J]\n"
+    "usage: contour [FILE|-] [-o OUT] [--spacing h | --cells N] [--k K] [--rho R] [--delta D] [--hoppe] [--max-jump J]\n"
     "  FILE: .pts (x y z [nx ny nz] per line), .xyz, .pwn or .ply; '-' reads .pts from standard input; with no\n"
     "  FILE standard input is read too, unless it is a terminal (then this is a usage error: give FILE, or '-'\n"
     "  to type the points, ended by Ctrl-D).\n"
@@ -74,6 +74,7 @@ struct Options
   std::string lattice_flag; // "--spacing h" or "--cells N", for messages
   std::optional<double> rho, delta;
   double max_jump = -1; // default of the library
+  bool hoppe_only = false; // --hoppe, or --max-jump: Hoppe's f alone
   std::size_t k = 15;
 };
 
@@ -95,9 +96,12 @@ void add_options(Tool& tool, Options& o, Option_text& t)
   app.add_option("--k", t.k, "neighbours per tangent plane (whole, 3 to 1024; default 15)")->type_name("K");
   app.add_option("--rho", t.rho, "sampling density (positive; default estimated)")->type_name("R");
   app.add_option("--delta", t.delta, "noise level (>= 0; default estimated)")->type_name("D");
+  app.add_flag("--hoppe", o.hoppe_only,
+               "Hoppe's f alone: skip cubes with an undefined corner or a jump of f (holes), instead of one "
+               "consistent sign per lattice point (winding number; closed output)");
   app.add_option("--max-jump", t.max_jump,
-                 "skip cubes where f jumps by more than J cells (>= 0; inf = Hoppe's plain rule; default 3 cells + "
-                 "2 delta)")
+                 "with Hoppe's f alone (implies --hoppe): skip cubes where f jumps by more than J cells (>= 0; inf = "
+                 "Hoppe's plain rule; default 3 cells + 2 delta)")
       ->type_name("J");
 }
 
@@ -130,7 +134,10 @@ void check_options(Tool& tool, Options& o, const Option_text& t)
   if(app.count("--delta"))
     o.delta = biso_tools::parse_real("--delta", t.delta, Sign_rule::NON_NEGATIVE);
   if(app.count("--max-jump"))
+  {
     o.max_jump = biso_tools::parse_real("--max-jump", t.max_jump, Sign_rule::NON_NEGATIVE, /* allow_infinity = */ true);
+    o.hoppe_only = true;
+  }
   const std::vector<std::string>& files = tool.positionals();
   if(files.size() > 1)
     throw Usage_error("more than one input file: " + biso_tools::quote_arg(files[0]) + " and " +
@@ -279,7 +286,9 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_report& r
       << " cubes visited, " << report.surface_cubes << " crossed, " << report.skipped_cubes
       << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, "
       << report.discontinuous_cubes << " skipped for a jump of f, " << report.removed_closed_components
-      << " closed pieces smaller than rho removed)\n";
+      << " closed pieces smaller than rho removed)\n"
+      << "signs: " << (report.consistent_signs ? "consistent (winding number)" : "Hoppe's f alone") << ", "
+      << report.removed_membranes << " membranes across wide openings removed\n";
   out << "triangles: " << triangles << ", vertices: " << vertices << "\n";
   biso_tools::Json_object& j = tool.summary();
   j.set("k", field.number_of_neighbors());
@@ -289,6 +298,8 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_report& r
   j.set_raw("cells", biso_tools::json_number_array({double(report.number_of_cells[0]),
                                                     double(report.number_of_cells[1]),
                                                     double(report.number_of_cells[2])}));
+  j.set("consistent_signs", report.consistent_signs);
+  j.set("removed_membranes", report.removed_membranes);
   j.set("vertices", vertices);
   j.set("faces", triangles);
 }
@@ -331,7 +342,9 @@ int run(Tool& tool, const Options& options)
   std::vector<Point_3> out_points;
   std::vector<std::array<std::size_t, 3>> triangles;
   const BI::Contouring_report report = BI::contour_signed_distance(
-      *field, out_points, triangles, BI::parameters::cell_size(cell, BI::parameters::maximum_jump(max_jump)));
+      *field, out_points, triangles,
+      BI::parameters::cell_size(
+          cell, BI::parameters::maximum_jump(max_jump, BI::parameters::consistent_signs(!options.hoppe_only))));
   tool.stage("field", "evaluated the distance at " + std::to_string(report.field_evaluations) + " lattice points",
              report.field_seconds);
   tool.stage("contouring", "contoured " + std::to_string(triangles.size()) + " triangles", report.contouring_seconds);
