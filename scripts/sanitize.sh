@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
-# The test suite again, built with AddressSanitizer + UndefinedBehaviorSanitizer
-# (CMake option BISO_SANITIZE) in build-sanitize/.  It builds the tests and the
-# tools they run, not the benchmarks, the Mesh_3 example, the Python module nor
-# the MPI drivers (OpenMPI's own allocations are not ours to check), and skips the
-# tests that only re-check the build (headers, install) and the slow
-# reference tests whose code paths the quick tests already cover
-# (test_csg_reference is not even built).
+# The test suites where the sanitizers pay, again, built with AddressSanitizer
+# + UndefinedBehaviorSanitizer (CMake option BISO_SANITIZE) in build-sanitize/:
+# the readers and parsers of untrusted files and the core algorithms
+# (BISO_SANITIZED_TESTS in test/Boolean_isosurfacing_3/CMakeLists.txt).  Not
+# the tools, the benchmarks, the examples, the Python module nor the MPI
+# drivers (OpenMPI's own allocations are not ours to check); the readers the
+# tools use are also fuzzed (scripts/fuzz.sh).  It skips the tests that only
+# re-check the build (headers, install) and the slow reference tests whose
+# code paths the quick tests already cover.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs="$(nproc)"
 # -O1: the sanitizers need no more, and it compiles the CGAL-heavy
 # translation units faster than -O3.
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DBISO_SANITIZE=ON -DBISO_BUILD_TESTS=ON \
-      -DBISO_BUILD_EXAMPLES=ON -DBISO_BUILD_BENCHMARKS=OFF -DBISO_BUILD_PYTHON=OFF -DBISO_WITH_MPI=OFF -DBISO_BUILD_DOC=OFF
+      -DBISO_BUILD_EXAMPLES=OFF -DBISO_BUILD_TOOLS=OFF -DBISO_BUILD_BENCHMARKS=OFF -DBISO_BUILD_PYTHON=OFF -DBISO_WITH_MPI=OFF \
+      -DBISO_BUILD_DOC=OFF
 cmake --build build-sanitize -j "$jobs"
 cd build-sanitize
 # detect_leaks: CGAL and TBB keep a few process-lifetime singletons; leaks are

@@ -20,6 +20,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
+#include "test_util.h"
+
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -35,10 +37,7 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef Epick::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
+using namespace CGAL::Boolean_isosurfacing::test::kernels;
 
 struct Input
 {
@@ -68,9 +67,7 @@ void prepare(Input& input)
   }
   input.soup.points = input.flat_points;
   input.soup.triangles = input.flat_triangles;
-  CGAL::Surface_mesh<Epeck::Point_3> exact_mesh;
-  CGAL::copy_face_graph(mesh, exact_mesh);
-  input.exact = CGAL::to_double(CGAL::exact(PMP::volume(exact_mesh)));
+  input.exact = BI::test::exact_volume(mesh);
 }
 
 double relative_error(double value, double exact) { return std::abs(value - exact) / std::abs(exact); }

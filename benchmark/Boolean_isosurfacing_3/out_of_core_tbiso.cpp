@@ -118,11 +118,11 @@ int main(int argc, char** argv)
   const double total = seconds_since(t);
   std::cout << (sequential ? "sequential" : "parallel") << ", " << stats.number_of_slabs << " slabs of " << slab
             << " layers\n"
-            << "extraction end to end: " << total << " s (reading " << stats.reading_seconds
-            << " s summed over threads, evaluation+reading wall " << stats.extraction_seconds << " s, welding+writing "
-            << stats.welding_seconds << " s)\n"
+            << "extraction end to end: " << total << " s (reading " << stats.seconds_reading
+            << " s summed over threads, evaluation+reading wall " << stats.seconds_extraction << " s, welding+writing "
+            << stats.seconds_welding << " s)\n"
             << "evaluated tetrahedra: " << stats.number_of_evaluated_tetrahedra << "\n"
-            << "output: " << stats.number_of_vertices << " vertices, " << stats.number_of_polygons << " polygons, "
+            << "output: " << stats.number_of_vertices << " vertices, " << stats.number_of_faces << " polygons, "
             << double(std::filesystem::file_size(output)) / 1e6 << " MB in " << output << "\n"
             << "field values held at once: " << stats.peak_field_values << " ("
             << double(stats.peak_field_values) * 8 / 1e6 << " MB as double)\n"

@@ -49,19 +49,27 @@ static_assert(sizeof(std::size_t) == sizeof(std::int64_t), "64-bit indices expec
 typedef py::array_t<double, py::array::c_style | py::array::forcecast> Double_array;
 typedef py::array_t<std::int64_t, py::array::c_style> Index_array;
 
-/// The library's progress callback, used to make long calls interruptible:
-/// called from the calling thread between batches of work, it takes the GIL
-/// back for a moment and lets Python run its signal handlers, so that
-/// Ctrl-C (KeyboardInterrupt) stops the call there.
+/// The library's progress callback (CGAL's `callback` named parameter),
+/// used to make long calls interruptible: called from the calling thread
+/// between batches of work, it takes the GIL back for a moment and lets
+/// Python run its signal handlers, so that Ctrl-C (KeyboardInterrupt) stops
+/// the call there.  It never asks the library to cancel: the exception does.
 struct Check_python_signals
 {
-  void operator()(double) const
+  bool operator()(double) const
   {
     py::gil_scoped_acquire gil;
     if(PyErr_CheckSignals() != 0)
       throw py::error_already_set();
+    return true;
   }
 };
+
+/// `Check_python_signals` as the type of CGAL's `callback` named parameter.
+inline std::function<bool(double)> python_signals_callback()
+{
+  return std::function<bool(double)>(Check_python_signals());
+}
 
 /// A file that cannot be opened: becomes OSError(errno, message, path), so
 /// FileNotFoundError / PermissionError where errno says so.

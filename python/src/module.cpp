@@ -210,16 +210,11 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
                                                                           offset));
     const std::size_t memory = max_memory_bytes ? *max_memory_bytes : BI::Lattice_classifier_3::default_max_memory_bytes;
     statistics = with_threads(threads, [&] {
-      return BI::marching_cubes_csg<CGAL::Parallel_if_available_tag>(meshes, expression, *lattice, points, triangles,
-                                                                      BI::parameters::progress(
-                                                                          std::function<void(double)>(
-                                                                              Check_python_signals()),
-                                                                          BI::parameters::max_memory_bytes(
-                                                                              memory,
-                                                                              BI::parameters::sharp_features(
-                                                                                  features,
-                                                                                  BI::parameters::feature_angle(
-                                                                                      feature_angle)))));
+      return BI::marching_cubes_csg<CGAL::Parallel_if_available_tag>(
+          *lattice, meshes, expression, points, triangles,
+          BI::parameters::max_memory_bytes(
+              memory, BI::parameters::sharp_features(features, BI::parameters::feature_angle(feature_angle)))
+              .callback(python_signals_callback()));
     });
     total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -278,7 +273,7 @@ py::tuple contour_py(const py::handle& points_object, const py::handle& normals_
   }
   std::vector<Point_3> out_points;
   std::vector<std::array<std::size_t, 3>> triangles;
-  BI::Contouring_report report;
+  BI::Contouring_statistics report;
   std::optional<Field> field;
   {
     py::gil_scoped_release release;
@@ -342,12 +337,12 @@ py::tuple contour_py(const py::handle& points_object, const py::handle& normals_
       throw BI::Invalid_input_error("max_jump must be positive (inf: Hoppe's plain rule)");
     if(!(std::isfinite(lattice_margin) && lattice_margin >= 0))
       throw BI::Invalid_input_error("margin must be >= 0 and finite");
+    const BI::Regular_lattice_3 lattice =
+        BI::contouring_lattice(*field, BI::parameters::cell_size(r, BI::parameters::lattice_margin(lattice_margin)));
     report = BI::contour_signed_distance(
-        *field, out_points, triangles,
-        BI::parameters::cell_size(
-            r, BI::parameters::maximum_jump(
-                   jump, BI::parameters::minimum_closed_component_size(
-                             bubble, BI::parameters::lattice_margin(lattice_margin)))));
+        lattice, *field, out_points, triangles,
+        BI::parameters::maximum_jump(jump, BI::parameters::minimum_closed_component_size(bubble))
+            .callback(python_signals_callback()));
   }
   py::dict info;
   const auto& t = field->timings();
@@ -371,8 +366,8 @@ py::tuple contour_py(const py::handle& points_object, const py::handle& normals_
   info["seconds_neighbors"] = t.neighbors;
   info["seconds_planes"] = t.planes;
   info["seconds_orientation"] = t.orientation;
-  info["seconds_field"] = report.field_seconds;
-  info["seconds_contouring"] = report.contouring_seconds;
+  info["seconds_field"] = report.seconds_field;
+  info["seconds_contouring"] = report.seconds_contouring;
   return py::make_tuple(points_array(std::move(out_points)), index_array(std::move(triangles)), info);
 }
 

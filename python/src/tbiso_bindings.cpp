@@ -164,9 +164,8 @@ py::tuple boolean_isosurface_py(const py::handle& fields_object, const std::stri
   std::optional<double> volume;
   {
     py::gil_scoped_release release;
-    const auto np = BI::parameters::close_at_domain_boundary(
-        close, BI::parameters::slab_layers(slab_layers, BI::parameters::progress(std::function<void(double)>(
-                                                             Check_python_signals()))));
+    const auto np = BI::parameters::close_at_domain_boundary(close, BI::parameters::slab_layers(slab_layers))
+                        .callback(python_signals_callback());
     stats = with_threads(threads, [&] {
       return grid_domain ? BI::extract_boolean_isosurface<CGAL::Parallel_if_available_tag>(*grid_domain, fields,
                                                                                              expression, soup, np)
@@ -192,9 +191,9 @@ py::tuple boolean_isosurface_py(const py::handle& fields_object, const std::stri
   info["number_of_crease_edges"] = creases.number_of_crease_edges;
   info["closed"] = volume.has_value();
   info["volume"] = volume;
-  info["seconds_table"] = stats.table_seconds;
-  info["seconds_extraction"] = stats.extraction_seconds;
-  info["seconds_welding"] = stats.welding_seconds;
+  info["seconds_table"] = stats.seconds_tables;
+  info["seconds_extraction"] = stats.seconds_extraction;
+  info["seconds_welding"] = stats.seconds_welding;
   info["seconds_creases"] = crease_seconds;
   info["seconds_smoothing"] = smoothing_seconds;
   py::array_t<int> labels(py::ssize_t(soup.face_fields.size()));

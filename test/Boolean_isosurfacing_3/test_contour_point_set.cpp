@@ -695,19 +695,15 @@ TEST(Reconstruct, Contour_point_set_overloads)
   const BI::Contouring_statistics a = BI::contour_point_set(lattice, s.points, points, triangles);
   EXPECT_EQ(a.number_of_faces, triangles.size());
   EXPECT_EQ(a.number_of_vertices, points.size());
-  // The deprecated shape (the lattice from the named parameters) gives the same soup.
-  std::vector<Point_3> old_points;
-  std::vector<Triangle> old_triangles;
-  BI::contour_point_set(s.points, old_points, old_triangles);
-  EXPECT_EQ(old_triangles, triangles);
   EXPECT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(triangles));
   // Indices + point and normal maps + our parameters first, into a Surface_mesh.
   Mesh mesh;
-  const BI::Contouring_statistics b = BI::contour_point_set(
-    indices, mesh,
-    BI::parameters::cells_along_longest_side(40, BI::parameters::number_of_neighbors(std::size_t(12)))
-      .point_map(CGAL::make_property_map(s.points))
-      .normal_map(CGAL::make_property_map(s.normals)));
+  const auto np = BI::parameters::cells_along_longest_side(40, BI::parameters::number_of_neighbors(std::size_t(12)))
+                      .point_map(CGAL::make_property_map(s.points))
+                      .normal_map(CGAL::make_property_map(s.normals));
+  const BI::Regular_lattice_3 lattice_40 =
+    BI::contouring_lattice(BI::Tangent_plane_signed_distance_3<K>(indices, np), np);
+  const BI::Contouring_statistics b = BI::contour_point_set(lattice_40, indices, mesh, np);
   EXPECT_TRUE(CGAL::is_closed(mesh));
   EXPECT_EQ(mesh.number_of_faces(), b.number_of_faces);
   EXPECT_GT(CGAL::to_double(BI::surveyor_volume(mesh)), 0);

@@ -143,7 +143,8 @@ TEST(Traversal, Empty_output_is_reported)
   const Samples s = sample_mesh(sphere, 1000, 12);
   std::vector<Point_3> out;
   triangles.clear();
-  EXPECT_NO_THROW(BI::contour_point_set(s.points, out, triangles));
+  const BI::Regular_lattice_3 lattice = BI::contouring_lattice(BI::Tangent_plane_signed_distance_3<K>(s.points));
+  EXPECT_NO_THROW(BI::contour_point_set(lattice, s.points, out, triangles));
   EXPECT_FALSE(triangles.empty());
   // Hoppe's f alone with maximum_jump(0): every crossed cube counts as a
   // jump of f, nothing is left.
@@ -152,7 +153,7 @@ TEST(Traversal, Empty_output_is_reported)
   {
     out.clear();
     triangles.clear();
-    BI::contour_point_set(s.points, out, triangles, none_left);
+    BI::contour_point_set(lattice, s.points, out, triangles, none_left);
     ADD_FAILURE() << "an empty contour must throw";
   }
   catch(const BI::Empty_contour_error& e)
@@ -161,7 +162,7 @@ TEST(Traversal, Empty_output_is_reported)
     EXPECT_NE(std::string(e.what()).find("empty"), std::string::npos);
   }
   Mesh mesh;
-  EXPECT_THROW(BI::contour_point_set(s.points, mesh, none_left), BI::Empty_contour_error);
+  EXPECT_THROW(BI::contour_point_set(lattice, s.points, mesh, none_left), BI::Empty_contour_error);
 }
 
 namespace {

@@ -26,6 +26,8 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,11 +39,7 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef Epick::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
-typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
+using namespace CGAL::Boolean_isosurfacing::test::kernels;
 
 enum class Operation { UNION, INTERSECTION, DIFFERENCE };
 const char* name(Operation op)
@@ -86,13 +84,6 @@ Mesh corefinement_result(const Mesh& a, const Mesh& b, Operation op)
   Mesh out;
   CGAL::copy_face_graph(result, out);
   return out;
-}
-
-double exact_volume_of(const Mesh& m)
-{
-  Exact_mesh e;
-  CGAL::copy_face_graph(m, e);
-  return CGAL::to_double(CGAL::exact(PMP::volume(e)));
 }
 
 // Sampled one-sided Hausdorff distance from `a` to `b`
@@ -146,7 +137,7 @@ void check_pair(const std::string& label, const Mesh& a, const Mesh& b, const st
   for(Operation op : {Operation::UNION, Operation::INTERSECTION, Operation::DIFFERENCE})
   {
     const Mesh exact = corefinement_result(a, b, op);
-    const double exact_volume = exact_volume_of(exact);
+    const double exact_volume = BI::test::exact_volume(exact);
     ASSERT_GT(exact_volume, 0) << label << " " << name(op);
     std::vector<double> errors, distances_from_exact;
     for(std::size_t n : cells)
@@ -246,7 +237,7 @@ TEST(CsgReference, NefPolyhedronAgreesWithCorefinementAndMarchingCubesConverges)
     // Corefinement output was rounded to double by the copy to Epick: compare
     // to double precision.
     const double nef_v = CGAL::to_double(CGAL::exact(nef_volume));
-    EXPECT_NEAR(exact_volume_of(core), nef_v, 1e-12 * nef_v) << name(op);
+    EXPECT_NEAR(BI::test::exact_volume(core), nef_v, 1e-12 * nef_v) << name(op);
     double previous = 1;
     for(std::size_t n : {16, 32, 64})
     {

@@ -16,6 +16,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/Lattice_classifier_3.h>
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
@@ -35,6 +36,8 @@
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
+
+#include "test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -75,17 +78,6 @@ Mesh make_sphere(const Point& center, double radius, unsigned subdivisions)
 {
   Mesh mesh;
   BI::make_icosphere(mesh, center, radius, subdivisions);
-  return mesh;
-}
-
-Mesh make_box(const Point& low, const Point& high)
-{
-  Mesh mesh;
-  CGAL::make_hexahedron(Point(low.x(), low.y(), low.z()), Point(high.x(), low.y(), low.z()),
-                        Point(high.x(), high.y(), low.z()), Point(low.x(), high.y(), low.z()),
-                        Point(low.x(), high.y(), high.z()), Point(low.x(), low.y(), high.z()),
-                        Point(high.x(), low.y(), high.z()), Point(high.x(), high.y(), high.z()), mesh);
-  PMP::triangulate_faces(mesh);
   return mesh;
 }
 
@@ -299,7 +291,9 @@ TEST(RegularLattice, BadParametersThrow)
   EXPECT_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{2, 0, 2}}), BI::Invalid_input_error);
   // Spacing lost in the rounding of the coordinates.
   EXPECT_THROW(BI::Regular_lattice_3({{1e20, 0, 0}}, 1.0, {{3, 2, 2}}), BI::Invalid_input_error);
-  EXPECT_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{2048, 2048, 1024}}), BI::Lattice_too_large_error);
+  // Beyond 2^62 points linear_index() would overflow; 2^32 points are fine.
+  EXPECT_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{1u << 21, 1u << 21, 1u << 21}}), BI::Lattice_too_large_error);
+  EXPECT_NO_THROW(BI::Regular_lattice_3({{0, 0, 0}}, 1.0, {{2048, 2048, 1024}}));
   EXPECT_THROW(BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(), 0.1), BI::Invalid_input_error);
   EXPECT_THROW(BI::Regular_lattice_3::enclosing(unit, 0.0), BI::Invalid_input_error);
   EXPECT_THROW(BI::Regular_lattice_3::enclosing_with_cells(CGAL::Bbox_3(1, 1, 1, 1, 1, 1), 10),
@@ -312,7 +306,7 @@ TEST(RegularLattice, BadParametersThrow)
   }
   catch(const BI::Lattice_too_large_error& e)
   {
-    EXPECT_NE(std::string(e.what()).find("2^31"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("2^62"), std::string::npos) << e.what();
   }
 }
 
@@ -394,8 +388,8 @@ TEST(LatticeClassifier, LatticeCoveringOnlyPartOfTheMesh)
   EXPECT_FALSE(soup.triangles.empty());
 }
 
-// 9 meshes (2-byte masks) and 33 meshes (8-byte masks): every bit of the
-// mask is the classification of that mesh alone.
+// 9 meshes and 33 meshes (more bits than a byte or a word): every bit of
+// the mask is the classification of that mesh alone.
 TEST(LatticeClassifier, ManyMeshesUseWiderMasks)
 {
   for(std::size_t count : {9u, 33u})
@@ -412,7 +406,6 @@ TEST(LatticeClassifier, ManyMeshesUseWiderMasks)
       pointers.push_back(&m);
     const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(bbox_of(pointers), 28);
     const BI::Lattice_classifier_3 classifier = BI::Lattice_classifier_3::classify(spheres, lattice);
-    EXPECT_EQ(classifier.bytes_per_mask(), count <= 16 ? 2u : 8u);
     EXPECT_EQ(classifier.number_of_inconsistent_edges(), 0u);
     for(std::size_t m = 0; m < count; m += 4)
     {
@@ -439,7 +432,7 @@ TEST(McCsgDegenerate, BoxOnLatticePlanesFollowsThePerturbationConvention)
       {Point(2, 2, 2), Point(5, 5, 5)}, {Point(2, 1.5, 2), Point(5.5, 4, 3)}, {Point(0.5, 1, 3), Point(7, 6.25, 6)}};
   for(const auto& b : boxes)
   {
-    const Mesh box = make_box(b.first, b.second);
+    const Mesh box = BI::test::make_box<Mesh>(b.first, b.second);
     const std::vector<const Mesh*> meshes = {&box};
     const BI::Lattice_classifier_3 classifier = BI::Lattice_classifier_3::classify(refs(meshes), lattice);
     EXPECT_EQ(classifier.number_of_inconsistent_edges(), 0u);
@@ -581,8 +574,8 @@ TEST(McCsgDegenerate, IdenticalMeshes)
 
 TEST(McCsgDegenerate, BoxesTouchingAlongAFace)
 {
-  const Mesh a = make_box(Point(1, 1, 1), Point(3, 3, 3));
-  const Mesh b = make_box(Point(3, 1, 1), Point(5, 3, 3));
+  const Mesh a = BI::test::make_box<Mesh>(Point(1, 1, 1), Point(3, 3, 3));
+  const Mesh b = BI::test::make_box<Mesh>(Point(3, 1, 1), Point(5, 3, 3));
   for(double offset : {0.0, 0.1})
   {
     SCOPED_TRACE(offset);
@@ -594,7 +587,7 @@ TEST(McCsgDegenerate, BoxesTouchingAlongAFace)
     EXPECT_NEAR(volume, 16.0, 16 * 0.25);
     // The union is exactly what the merged box gives: same states, and the
     // crossings of axis-aligned faces are exact.
-    const Mesh merged = make_box(Point(1, 1, 1), Point(5, 3, 3));
+    const Mesh merged = BI::test::make_box<Mesh>(Point(1, 1, 1), Point(5, 3, 3));
     EXPECT_TRUE(same_soup(u, run_csg({&merged}, BI::Boolean_expression::single(0, 1), lattice)));
     // The common face is not in the union.
     for(const Triangle& t : u.triangles)
@@ -915,6 +908,110 @@ TEST(McCsgParallel, IdenticalToSequential)
 #endif
 }
 
+// ------------------------------------------------------------------ sparse lattice
+
+// The lattice is never stored point by point: a lattice of 2.7e10 points
+// (a dense byte per point would be 25 GB) around a box a few cells wide
+// costs its lines and crossings only.  The output is the one of a small
+// lattice of the same spacing around the box: same counts, same volume.
+TEST(McCsgSparse, HugeLatticeAroundASmallBoxEqualsASmallLattice)
+{
+  const double r = 1.0 / 1024;
+  const Mesh box = BI::test::make_box<Mesh>(Point(1.5 + 0.31 * r, 1.5 + 0.27 * r, 1.5 + 0.45 * r),
+                            Point(1.5 + 4.63 * r, 1.5 + 3.72 * r, 1.5 + 5.18 * r));
+  const std::vector<const Mesh*> meshes = {&box};
+  const BI::Boolean_expression a = BI::Boolean_expression::single(0, 1);
+  const BI::Regular_lattice_3 huge({{0, 0, 0}}, r, {{3000, 3000, 3000}});
+  // The small lattice's points 0..9 are the huge one's points 1536..1545.
+  const BI::Regular_lattice_3 small({{1.5, 1.5, 1.5}}, r, {{10, 10, 10}});
+  ASSERT_EQ(huge.coordinate(0, 1536), 1.5);
+  const Soup far = run_csg(meshes, a, huge);
+  const Soup near = run_csg(meshes, a, small);
+  EXPECT_EQ(far.statistics.lattice_points, std::size_t(3000) * 3000 * 3000);
+  EXPECT_EQ(far.points.size(), near.points.size());
+  EXPECT_EQ(far.triangles.size(), near.triangles.size());
+  const double exact = 4.32 * 3.45 * 4.73 * r * r * r;
+  const double volume = check_output(far, "huge lattice");
+  EXPECT_NEAR(volume, exact, 1e-9 * exact);
+  EXPECT_NEAR(check_output(near, "small lattice"), volume, 1e-12 * exact);
+}
+
+// The sparse builder against a dense reference written here: every point's
+// state from mask(), every cube through the same table, vertices numbered
+// plane by plane by edge id 3 (i + nx j) + axis (the documented order).  The
+// triangles must be the same, index for index, for an expression whose
+// result is unbounded (!A | B: rows inside everywhere but near the surface)
+// and one that is not, on a lattice that cuts the inputs.
+TEST(McCsgSparse, EqualsADenseReferenceMarchingCubes)
+{
+  const Mesh a = make_sphere(Point(0, 0, 0), 1.0, 3);
+  const Mesh b = BI::test::make_box<Mesh>(Point(0.2, -0.4, -0.3), Point(1.4, 0.5, 0.6));
+  const std::vector<const Mesh*> meshes = {&a, &b};
+  // Cuts the sphere at x = -0.8 (a lattice narrower than the inputs).
+  const BI::Regular_lattice_3 lattice({{-0.8, -1.3, -1.25}}, 0.0731, {{33, 37, 36}});
+  const BI::Lattice_classifier_3 classifier = BI::Lattice_classifier_3::classify(refs(meshes), lattice);
+  const BI::Marching_cubes_table& table = BI::Marching_cubes_table::instance();
+  for(const char* text : {"A & !B", "!A | B"})
+  {
+    SCOPED_TRACE(text);
+    const BI::Boolean_expression e = BI::Boolean_expression::parse(text);
+    const Soup soup = run_csg(meshes, e, lattice, false);
+    const auto& n = lattice.number_of_points();
+    auto state = [&](std::size_t i, std::size_t j, std::size_t k) { return e.evaluate(classifier.mask(i, j, k)); };
+    // Vertex number of every vertex edge, in the documented order.
+    std::map<std::array<std::size_t, 4>, std::size_t> vertex;
+    for(std::size_t k = 0; k < n[2]; ++k)
+      for(std::size_t j = 0; j < n[1]; ++j)
+        for(std::size_t i = 0; i < n[0]; ++i)
+        {
+          const bool s = state(i, j, k);
+          if(i + 1 < n[0] && s != state(i + 1, j, k)) vertex.emplace(std::array<std::size_t, 4>{{i, j, k, 0}}, vertex.size());
+          if(j + 1 < n[1] && s != state(i, j + 1, k)) vertex.emplace(std::array<std::size_t, 4>{{i, j, k, 1}}, vertex.size());
+          if(k + 1 < n[2] && s != state(i, j, k + 1)) vertex.emplace(std::array<std::size_t, 4>{{i, j, k, 2}}, vertex.size());
+        }
+    std::vector<Triangle> expected;
+    for(std::size_t k = 0; k + 1 < n[2]; ++k)
+      for(std::size_t j = 0; j + 1 < n[1]; ++j)
+        for(std::size_t i = 0; i + 1 < n[0]; ++i)
+        {
+          unsigned code = 0;
+          for(int c = 0; c < 8; ++c)
+            code |= unsigned(state(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1))) << c;
+          for(const BI::Marching_cubes_table::Triangle& t : table.triangles(code))
+          {
+            Triangle out;
+            for(int v = 0; v < 3; ++v)
+            {
+              const std::array<int, 3> o = BI::cube_edge_origin_offset(t[v]);
+              out[v] = vertex.at({{i + std::size_t(o[0]), j + std::size_t(o[1]), k + std::size_t(o[2]),
+                                   std::size_t(BI::cube_edge_axis(t[v]))}});
+            }
+            expected.push_back(out);
+          }
+        }
+    EXPECT_GT(expected.size(), 1000u);
+    EXPECT_EQ(soup.points.size(), vertex.size());
+    EXPECT_TRUE(soup.triangles == expected);
+  }
+}
+
+// A lattice with 2^26 points or more along an axis is refused (the width
+// of a crossing's index), with the axis and the limit.
+TEST(McCsgSparse, AxisOfTwoToThe26PointsIsRefused)
+{
+  const Mesh box = BI::test::make_box<Mesh>(Point(0.1, 0.1, 0.1), Point(0.2, 0.2, 0.2));
+  const BI::Regular_lattice_3 lattice({{0, 0, 0}}, 1.0 / (1u << 26), {{std::size_t(1) << 26, 4, 4}});
+  try
+  {
+    BI::Lattice_classifier_3::classify(std::vector<Mesh>{box}, lattice);
+    ADD_FAILURE() << "no exception";
+  }
+  catch(const BI::Lattice_too_large_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("along x"), std::string::npos) << e.what();
+  }
+}
+
 // ------------------------------------------------------------------ API variants
 
 TEST(McCsgApi, SurfaceMeshOutputVectorTrianglesProgressAndAppending)
@@ -1007,8 +1104,8 @@ TEST(McCsgApi, ComplementIsReportedAsOpenAtTheLatticeBoundary)
 // interval of the result is at least 0.02 > 2 spacings long.
 TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
 {
-  const Mesh outer = make_box(Point(0, 0, 0), Point(1, 1, 1));
-  const Mesh inner = make_box(Point(0.02, 0.02, 0.02), Point(0.98, 0.98, 0.98));
+  const Mesh outer = BI::test::make_box<Mesh>(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh inner = BI::test::make_box<Mesh>(Point(0.02, 0.02, 0.02), Point(0.98, 0.98, 0.98));
   const CGAL::Bbox_3 box(0, 0, 0, 1, 1, 1);
   const Soup coarse = run_csg({&outer, &inner}, BI::Boolean_expression::difference(),
                               BI::Regular_lattice_3::enclosing(box, 1.0 / 16));
@@ -1036,7 +1133,7 @@ TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
 
   // Two overlapping boxes: nothing thin, and the line volume is exact along
   // x-lines (box faces between lattice planes).
-  const Mesh moved = make_box(Point(0.5, 0.25, 0.25), Point(1.5, 0.75, 0.75));
+  const Mesh moved = BI::test::make_box<Mesh>(Point(0.5, 0.25, 0.25), Point(1.5, 0.75, 0.75));
   const Soup both = run_csg({&outer, &moved}, BI::Boolean_expression::union_of(2),
                             BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(0, 0, 0, 1.5, 1, 1), 1.0 / 16));
   EXPECT_EQ(both.statistics.thin_result_intervals, 0u);
@@ -1113,7 +1210,7 @@ TEST(McCsgBadInput, SpecificExceptionsWithClearMessages)
       "has 2 variable(s) but 3 mesh(es)");
 
   expect_error<BI::Lattice_too_large_error>(
-      [&] { BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1e-9); }, "2^31");
+      [&] { BI::Regular_lattice_3::enclosing(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1e-9); }, "2^62");
   // The memory limit.
   expect_error<BI::Lattice_too_large_error>(
       [&] {

@@ -378,7 +378,7 @@ TEST(SlabRange, CsgRangesWeldToTheSequentialSurface)
       for(std::size_t r = 0; r < parts; ++r)
       {
         const auto range = BI::slab_range_of_part(layers, r, parts);
-        BI::marching_cubes_csg_slab_range(meshes, e, lattice, range.first, range.second, ranges[r]);
+        BI::marching_cubes_csg_slab_range(lattice, meshes, e, range.first, range.second, ranges[r]);
       }
       std::vector<std::size_t> offset(parts + 1, 0);
       for(std::size_t r = 0; r < parts; ++r)
@@ -416,10 +416,10 @@ TEST(SlabRange, CsgRangeRefusesSharpFeatures)
   const BI::Regular_lattice_3 lattice =
       BI::Regular_lattice_3::enclosing_with_cells(CGAL::Polygon_mesh_processing::bbox(meshes[0]), 8);
   BI::Marching_cubes_csg_slab_range range;
-  EXPECT_THROW(BI::marching_cubes_csg_slab_range(meshes, BI::Boolean_expression::union_of(1), lattice, 0, 4, range,
+  EXPECT_THROW(BI::marching_cubes_csg_slab_range(lattice, meshes, BI::Boolean_expression::union_of(1), 0, 4, range,
                                                  BI::parameters::sharp_features(true)),
                BI::Invalid_input_error);
-  BI::marching_cubes_csg_slab_range(meshes, BI::Boolean_expression::union_of(1), lattice, 0, 4, range,
+  BI::marching_cubes_csg_slab_range(lattice, meshes, BI::Boolean_expression::union_of(1), 0, 4, range,
                                     BI::parameters::sharp_features(false));
   EXPECT_GT(range.triangles.size(), 0u);
 }

@@ -18,6 +18,8 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include "test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -32,23 +34,10 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef Epick::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
-typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
+using namespace CGAL::Boolean_isosurfacing::test::kernels;
 typedef std::array<std::size_t, 3> Triangle;
 
-// The oracle: PMP::volume with Epeck (it calls exact() after every term, so
-// the value is the exact rational volume of the double coordinates), rounded
-// to the nearest double once at the end.
-double exact_volume(const Mesh& mesh)
-{
-  Exact_mesh exact_mesh;
-  CGAL::copy_face_graph(mesh, exact_mesh);
-  const Epeck::FT v = PMP::volume(exact_mesh);
-  return CGAL::to_double(CGAL::exact(v));
-}
+using CGAL::Boolean_isosurfacing::test::exact_volume; // the oracle
 
 double relative_error(double value, double reference)
 {

@@ -16,6 +16,8 @@
 #include <cstdlib>
 #include <fcntl.h>
 #include <fstream>
+#include <poll.h>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -588,9 +590,10 @@ TEST_F(CsgTool, TooManyCellsIsRefusedWithTheEstimateAndTheLimit)
   EXPECT_EQ(r.err.find("not a whole number"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--cells 2000000"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("would have 8e+18 points"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("2^31"), std::string::npos) << r.err;
-  // Below the point limit but above a small memory limit: the estimate in GiB.
-  const Result m = run(a + " " + a + " --op union --cells 1000 --max-memory 0.5");
+  EXPECT_NE(r.err.find("2^62"), std::string::npos) << r.err;
+  // Below the point limit but above a small memory limit: the estimate in GiB
+  // (the lattice is sparse: what grows is the crossings of the box's faces).
+  const Result m = run(a + " " + a + " --op union --cells 4000 --max-memory 0.5");
   EXPECT_EQ(m.status, 1) << m.err;
   EXPECT_TRUE(is_one_clean_line(m.err));
   EXPECT_NE(m.err.find("GiB, more than the limit of 0.5 GiB (--max-memory)"), std::string::npos) << m.err;
@@ -715,6 +718,66 @@ std::vector<std::array<double, 3>> read_points(const std::string& text, bool pol
     }
   }
   return points;
+}
+
+// Issue 17: --simplify keeps the (exact) result in a few hundred triangles,
+// --remesh keeps it too; the two exclude each other.
+TEST_F(CsgTool, SimplifyAndRemeshKeepTheResult)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(1.137, 1.091, 1.063, 2));
+  const double exact = 8 - 0.863 * 0.909 * 0.937;
+  const Result plain = run(a + " " + b + " --op difference --cells 32");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const Result simplified = run(a + " " + b + " --op difference --cells 32 --simplify");
+  ASSERT_EQ(simplified.status, 0) << simplified.err;
+  EXPECT_NEAR(number_after(simplified.out, "volume "), exact, 1e-9 * exact) << simplified.out;
+  EXPECT_LE(number_after(simplified.out, "vertices, "), 300) << simplified.out;
+  EXPECT_GT(number_after(plain.out, "vertices, "), 5 * number_after(simplified.out, "vertices, ")) << plain.out;
+  const Result remeshed = run(a + " " + b + " --op difference --cells 32 --remesh 0.1");
+  ASSERT_EQ(remeshed.status, 0) << remeshed.err;
+  EXPECT_NEAR(number_after(remeshed.out, "volume "), exact, 1e-9 * exact) << remeshed.out;
+  const Result both = run(a + " " + b + " --op difference --cells 32 --remesh --simplify");
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("at most one of --simplify and --remesh"), std::string::npos) << both.err;
+  EXPECT_EQ(run(a + " " + b + " --op difference --cells 32 --simplify -1").status, 2);
+}
+
+// Issue 17: the lattice is sized on where the result can be.  A unit part
+// intersected with an operand 10^30 wide comes out whole (on the inputs' box
+// the lattice would have cells of 10^29).
+TEST_F(CsgTool, ATinyPartInAHugeOperandIsSizedOnThePart)
+{
+  const std::string a = write("a.off", box_off(0.1, 0.2, 0.3, 1)), huge = write("huge.off", box_off(-1e30, -1e30, -1e30, 2e30));
+  const Result r = run(a + " " + huge + " --op intersection --cells 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(number_after(r.out, "volume "), 1.0, 1e-9) << r.out;
+  const Result d = run(a + " " + huge + " --op difference --cells 16");
+  ASSERT_EQ(d.status, 0) << d.err;
+  EXPECT_NE(d.out.find("the result is empty"), std::string::npos) << d.out;
+}
+
+// Issue 17: an input whose own shells overlap is named (parity makes the
+// doubly covered part a void).
+TEST_F(CsgTool, OverlappingShellsOfOneInputAreNamed)
+{
+  // Two unit-ish boxes in one file, overlapping.
+  std::ostringstream two;
+  two.precision(17);
+  two << "OFF\n16 24 0\n";
+  for(double o : {0.0, 0.5})
+    for(int k = 0; k < 8; ++k)
+      two << o + (k & 1) << ' ' << o + ((k >> 1) & 1) << ' ' << o + ((k >> 2) & 1) << "\n";
+  const int faces[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                            {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  for(int shell = 0; shell < 2; ++shell)
+    for(const auto& f : faces)
+      two << "3 " << f[0] + 8 * shell << ' ' << f[1] + 8 * shell << ' ' << f[2] + 8 * shell << "\n";
+  const std::string a = write("two_shells.off", two.str()), b = write("b.off", box_off(3, 3, 3, 1));
+  const Result r = run(a + " " + b + " --op union --cells 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("two_shells.off (A) has overlapping shells"), std::string::npos) << r.err;
+  const Result clean = run(b + " " + b + " --op union --cells 16 --check-inputs");
+  EXPECT_EQ(clean.err.find("overlapping"), std::string::npos) << clean.err;
 }
 
 // A = [0,2]^3 minus B = A moved by a non-lattice offset: the exact result has
@@ -1047,6 +1110,93 @@ TEST_F(Tool, ProgressLinesNameTheStageAndAreSilencedByQuiet)
   EXPECT_TRUE(run_tool(BISO_TBISO_TOOL, "--cells 8 --field sphere:0,0,0,0.5 --quiet").err.empty());
   const Result c = run_tool(BISO_CONTOUR_TOOL, std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn");
   EXPECT_NE(c.err.find("contour: contoured "), std::string::npos) << c.err;
+}
+
+// Runs `tool arguments...` with stderr on a pseudo-terminal (stdin and stdout
+// on /dev/null) and the progress delay at 0, and returns what it printed on
+// the terminal.
+std::string run_on_a_terminal(const char* tool, const std::vector<std::string>& arguments)
+{
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  if(master < 0 || grantpt(master) != 0 || unlockpt(master) != 0)
+    return "no pseudo-terminal";
+  const std::string slave_name = ptsname(master);
+  std::vector<char*> argv{const_cast<char*>(tool)};
+  for(const std::string& a : arguments)
+    argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if(pid == 0)
+  {
+    const int slave = open(slave_name.c_str(), O_RDWR);
+    const int null = open("/dev/null", O_RDWR);
+    if(slave < 0 || null < 0) _exit(100);
+    dup2(null, 0);
+    dup2(null, 1);
+    dup2(slave, 2);
+    setenv("BISO_PROGRESS_DELAY", "0", 1);
+    execv(tool, argv.data());
+    _exit(101);
+  }
+  // Read while it runs (a pseudo-terminal holds a few kB), until it exits.
+  std::string text;
+  char buffer[4096];
+  int status = 0;
+  bool exited = false;
+  for(int i = 0; i < 1200; ++i) // 60 s at most
+  {
+    pollfd p{master, POLLIN, 0};
+    while(poll(&p, 1, 0) > 0 && (p.revents & POLLIN))
+    {
+      const ssize_t n = read(master, buffer, sizeof buffer);
+      if(n <= 0)
+        break;
+      text.append(buffer, std::size_t(n));
+    }
+    if(exited)
+      break;
+    exited = waitpid(pid, &status, WNOHANG) == pid;
+    if(!exited)
+      usleep(50000);
+  }
+  if(!exited)
+  {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  close(master);
+  return text;
+}
+
+// On a terminal, the CSG's progress comes live through the library's
+// `callback`: a line "csg: computing the CSG [###   ]  N%" redrawn in place
+// (\r), erased (\r, spaces, \r) before the stage lines; --quiet silences it.
+TEST_F(Tool, ProgressLineIsLiveOnATerminalAndErasedBeforeTheStageLines)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2)), b = write("b.off", box_off(1, 1, 1, 2));
+  const std::string text = run_on_a_terminal(BISO_CSG_TOOL, {a, b, "--op", "union", "--cells", "40"});
+  const std::size_t first = text.find("csg: computing the CSG [");
+  ASSERT_NE(first, std::string::npos) << text;
+  const std::size_t stage = text.find("csg: classified ");
+  ASSERT_NE(stage, std::string::npos) << text;
+  EXPECT_LT(first, stage) << text;
+  // More than one fraction drawn, in place, each with its percentage.
+  const std::string progress = text.substr(first, stage - first);
+  const std::regex drawn("\r?csg: computing the CSG \\[#* *\\] +[0-9]+%");
+  const auto lines = std::distance(std::sregex_iterator(progress.begin(), progress.end(), drawn), std::sregex_iterator());
+  EXPECT_GE(lines, 2) << progress;
+  // Erased before the stage line: "\r", spaces, "\r" just before it.
+  EXPECT_TRUE(std::regex_search(progress, std::regex("\r +\r$"))) << progress;
+  // Nothing of it under --quiet.
+  const std::string quiet = run_on_a_terminal(BISO_CSG_TOOL, {a, b, "--op", "union", "--cells", "40", "--quiet"});
+  EXPECT_EQ(quiet.find('%'), std::string::npos) << quiet;
+  EXPECT_EQ(quiet.find("csg: "), std::string::npos) << quiet;
+  // The contouring and TBISO show theirs too.
+  const std::string c =
+      run_on_a_terminal(BISO_CONTOUR_TOOL, {std::string(BISO_SHARED_DATA_DIR) + "/points/sphere.pwn"});
+  EXPECT_NE(c.find("contour: contouring ["), std::string::npos) << c;
+  const std::string t = run_on_a_terminal(BISO_TBISO_TOOL, {"--cells", "24", "--field", "sphere:0,0,0,0.5"});
+  EXPECT_NE(t.find("tbiso: extracting the surface ["), std::string::npos) << t;
 }
 
 TEST_F(Tool, SequentialAndThreadLimitGiveByteIdenticalFiles)

@@ -4,11 +4,17 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_TEST_UTIL_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_TEST_UTIL_H
 
-// Helpers shared by the tests (and the benchmarks): input meshes, analytic
-// fields, the invariants every closed output must satisfy.
+// Helpers shared by the tests (and the benchmarks): the kernels and mesh
+// types, the exact volume oracle, input meshes, analytic fields, the
+// invariants every closed output must satisfy.
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -21,6 +27,27 @@
 namespace CGAL {
 namespace Boolean_isosurfacing {
 namespace test {
+
+/// The kernels and meshes of the tests and benchmarks
+/// (`using namespace CGAL::Boolean_isosurfacing::test::kernels;`).
+namespace kernels {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+typedef Epick::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
+} // namespace kernels
+
+/// The oracle of volumes: PMP::volume with Epeck (it calls exact() after
+/// every term, so the value is the exact rational volume of the mesh's double
+/// coordinates), rounded to the nearest double once at the end.
+template <typename TriangleMesh>
+double exact_volume(const TriangleMesh& mesh)
+{
+  kernels::Exact_mesh exact_mesh;
+  CGAL::copy_face_graph(mesh, exact_mesh);
+  return CGAL::to_double(CGAL::exact(CGAL::Polygon_mesh_processing::volume(exact_mesh)));
+}
 
 /// The axis-aligned box [low, high], triangulated (12 triangles, outward).
 template <typename Mesh, typename Point>

@@ -9,7 +9,10 @@
 //   - a problem with a file or the computation is one line, exit 1;
 //   - `--threads N` / `--sequential` bound the parallelism (TBB's
 //     global_control), `--json` replaces the human summary on stdout by one
-//     JSON object, `--quiet` silences the progress lines on stderr.
+//     JSON object, `--quiet` silences the progress lines on stderr;
+//   - a long library call shows a live progress line on a terminal, fed by
+//     CGAL's `callback` named parameter (`Tool::progress()`), and every
+//     stage ends with one line "<tool>: <what> in <seconds> s".
 //
 // An option given twice is an error, unless the tool marks it repeatable.
 
@@ -27,6 +30,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <new>
@@ -53,27 +57,80 @@ private:
   std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
-/// A progress bar on stderr (the library's `progress` callback), only for
-/// runs that last, only on a terminal, and not under --quiet.
-class Progress_bar
+/// The one progress line of the process on stderr (a terminal has one
+/// cursor): its length on screen (0: none drawn) and its last percentage.
+struct Progress_line_state
 {
-public:
-  explicit Progress_bar(bool quiet) : m_quiet(quiet) {}
-  void operator()(double fraction) const
-  {
-    if(m_quiet || m_watch.seconds() < 1.0 || !isatty(2))
-      return;
-    const int width = 40, done = int(fraction * width + 0.5);
-    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(done, '#').c_str(), std::string(width - done, ' ').c_str(),
-                 int(fraction * 100 + 0.5));
-    if(fraction >= 1.0)
-      std::fprintf(stderr, "\r%*s\r", width + 8, "");
-  }
-
-private:
-  bool m_quiet;
-  Stopwatch m_watch;
+  int length = 0;
+  int percent = -1;
 };
+
+inline Progress_line_state& progress_line_state()
+{
+  static Progress_line_state state;
+  return state;
+}
+
+/// Erases the progress line, if one is drawn ("\r", spaces, "\r"): every
+/// other line the tools print on stderr starts on a clean line.
+inline void end_progress_line()
+{
+  Progress_line_state& state = progress_line_state();
+  if(state.length > 0)
+  {
+    std::fprintf(stderr, "\r%*s\r", state.length, "");
+    std::fflush(stderr);
+  }
+  state = Progress_line_state();
+}
+
+/// Seconds a call runs before its progress line appears: 1, or the
+/// environment variable BISO_PROGRESS_DELAY (the tests set 0).
+inline double progress_delay()
+{
+  const char* text = std::getenv("BISO_PROGRESS_DELAY");
+  char* end = nullptr;
+  const double delay = text != nullptr ? std::strtod(text, &end) : 1.0;
+  return text != nullptr && end != text && delay >= 0 ? delay : 1.0;
+}
+
+/// The `callback` named parameter of a long library call
+/// (`CGAL::parameters::callback(progress_callback(...))`): a progress line
+/// "<tool>: <what> [####      ]  42%" on stderr, redrawn in place as the
+/// library reports the fraction done, erased when it reaches 1 (or when the
+/// tool prints its next line).  Only on a terminal, only once the call has
+/// lasted `progress_delay()` seconds, never when `silent` (--quiet).  It
+/// never cancels.
+inline std::function<bool(double)> progress_callback(const char* tool, const std::string& what, bool silent)
+{
+  end_progress_line();
+  if(silent || !isatty(2))
+    return [](double) { return true; };
+  const Stopwatch watch;
+  const double delay = progress_delay();
+  const std::string text = std::string(tool) + ": " + printable(what);
+  return [watch, delay, text](double fraction) {
+    if(watch.seconds() < delay)
+      return true;
+    if(!(fraction < 1))
+    {
+      end_progress_line();
+      return true;
+    }
+    fraction = fraction > 0 ? fraction : 0;
+    Progress_line_state& state = progress_line_state();
+    const int percent = int(fraction * 100);
+    if(percent == state.percent)
+      return true;
+    const int width = 30, done = int(fraction * width);
+    const int length = std::fprintf(stderr, "\r%s [%s%s] %3d%%", text.c_str(), std::string(done, '#').c_str(),
+                                    std::string(width - done, ' ').c_str(), percent);
+    std::fflush(stderr);
+    state.length = length > 1 ? length - 1 : 0;
+    state.percent = percent;
+    return true;
+  };
+}
 
 /// One tool's command line, its common options, its reporting channels.
 class Tool
@@ -125,20 +182,32 @@ public:
   void set_root(bool root) { m_root = root; }
   bool root() const { return m_root; }
 
-  /// A stage that ended: "<tool>: <what> in <seconds> s" on stderr, and its
-  /// time in the JSON summary under times.<key>.
+  /// A stage that ended: "<tool>: <what> in <seconds> s" on stderr (it
+  /// replaces the stage's progress line), and its time in the JSON summary
+  /// under times.<key>.
   void stage(const std::string& key, const std::string& what, double seconds)
   {
     m_times.set(key, seconds);
+    end_progress_line();
     if(!m_quiet && m_root)
       std::fprintf(stderr, "%s: %s in %.3g s\n", m_name, printable(what).c_str(), seconds);
   }
+
+  /// The `callback` named parameter of a long library call: the live
+  /// progress line of `progress_callback()`, silent under --quiet and on
+  /// ranks other than the root.
+  std::function<bool(double)> progress(const std::string& what) const
+  {
+    return progress_callback(m_name, what, m_quiet || !m_root);
+  }
+
   /// A time without a progress line (sub-stages the library reports).
   void time(const std::string& key, double seconds) { m_times.set(key, seconds); }
 
   /// "<tool>: warning: <text>" on stderr (always), and in the JSON warnings.
   void warning(const std::string& text)
   {
+    end_progress_line();
     m_warnings.push_back(text);
     if(m_root)
       print_error(m_name, "warning: " + text);
@@ -146,6 +215,7 @@ public:
   /// "<tool>: note: <text>" on stderr (always), and in the JSON notes.
   void note(const std::string& text)
   {
+    end_progress_line();
     m_notes.push_back(text);
     if(m_root)
       print_error(m_name, "note: " + text);
@@ -220,6 +290,7 @@ public:
   /// "<tool>: error: <text>" on stderr (the root rank only).
   void error(const std::string& text) const
   {
+    end_progress_line();
     if(m_root)
       print_error(m_name, "error: " + text);
   }

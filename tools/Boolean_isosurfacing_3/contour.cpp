@@ -32,6 +32,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -73,8 +74,8 @@ struct Options
   std::optional<std::size_t> cells;
   std::string lattice_flag; // "--spacing h" or "--cells N", for messages
   std::optional<double> rho, delta;
-  double max_jump = -1; // default of the library
-  bool hoppe_only = false; // --hoppe, or --max-jump: Hoppe's f alone
+  std::optional<double> max_jump; // in cells; the library's default without it
+  bool hoppe_only = false;        // --hoppe, or --max-jump: Hoppe's f alone
   std::size_t k = 15;
 };
 
@@ -225,10 +226,11 @@ void build_field(const Options& options, const Samples& s, std::optional<Field>&
     build(base);
 }
 
-// The cell size the command line asks for (the field's default without a flag).
-double cell_size(const Options& options, const Samples& s, const Field& field)
+// The cell size the command line asks for (the field's default without a
+// flag), checked against the tool's limit on the output size.
+std::optional<double> cell_size(const Options& options, const Samples& s, const Field& field)
 {
-  double cell = field.default_cell_size();
+  std::optional<double> cell;
   if(options.cell)
     cell = *options.cell;
   else if(options.cells)
@@ -242,9 +244,40 @@ double cell_size(const Options& options, const Samples& s, const Field& field)
       }
     cell = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) / *options.cells;
   }
-  if(options.cell || options.cells)
-    check_cell_size(cell, field.default_cell_size(), s.points.size(), options.lattice_flag);
+  if(cell)
+    check_cell_size(*cell, field.default_cell_size(), s.points.size(), options.lattice_flag);
   return cell;
+}
+
+// The library's contouring lattice of the field, with the spacing asked for
+// (a lattice has at most 2^31 points).
+BI::Regular_lattice_3 lattice_of(const Options& options, const Field& field, const std::optional<double>& cell)
+{
+  try
+  {
+    return cell ? BI::contouring_lattice(field, BI::parameters::cell_size(*cell)) : BI::contouring_lattice(field);
+  }
+  catch(const BI::Lattice_too_large_error& e)
+  {
+    throw BI::Lattice_too_large_error((options.lattice_flag.empty() ? "" : options.lattice_flag + ": ") + e.what());
+  }
+}
+
+// The contouring, on `tool`'s progress line; --max-jump is in cells.
+template <typename ConcurrencyTag>
+BI::Contouring_statistics contour(Tool& tool, const Options& options, const BI::Regular_lattice_3& lattice,
+                                  const Field& field, std::vector<Point_3>& points,
+                                  std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  const std::function<bool(double)> progress = tool.progress("contouring");
+  const bool consistent = !options.hoppe_only;
+  if(options.max_jump)
+    return BI::contour_signed_distance<ConcurrencyTag>(
+        lattice, field, points, triangles,
+        BI::parameters::maximum_jump(*options.max_jump * lattice.spacing(), BI::parameters::consistent_signs(consistent))
+            .callback(progress));
+  return BI::contour_signed_distance<ConcurrencyTag>(lattice, field, points, triangles,
+                                                     BI::parameters::consistent_signs(consistent).callback(progress));
 }
 
 void report_field(Tool& tool, const Field& field)
@@ -262,7 +295,7 @@ void report_field(Tool& tool, const Field& field)
   }
 }
 
-void print_report(Tool& tool, const Field& field, const BI::Contouring_report& report, double read_seconds,
+void print_report(Tool& tool, const Field& field, const BI::Contouring_statistics& report, double read_seconds,
                   std::size_t vertices, std::size_t triangles)
 {
   const auto& t = field.timings();
@@ -280,9 +313,9 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_report& r
               ? std::string(" (from input normals)")
               : " (minimum spanning forest, " + std::to_string(field.number_of_orientation_trees()) + " tree(s))")
       << "\n"
-      << "time distance field: " << report.field_seconds << " s (" << report.field_evaluations
+      << "time distance field: " << report.seconds_field << " s (" << report.field_evaluations
       << " lattice points, " << report.undefined_points << " undefined)\n"
-      << "time contouring:    " << report.contouring_seconds << " s (" << report.visited_cubes
+      << "time contouring:    " << report.seconds_contouring << " s (" << report.visited_cubes
       << " cubes visited, " << report.surface_cubes << " crossed, " << report.skipped_cubes
       << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, "
       << report.discontinuous_cubes << " skipped for a jump of f, " << report.removed_closed_components
@@ -336,18 +369,16 @@ int run(Tool& tool, const Options& options)
   build_field(options, samples, field);
   report_field(tool, *field);
 
-  // The cell size first (it scales the jump bound), then contour.
-  const double cell = cell_size(options, samples, *field);
-  const double max_jump = options.max_jump >= 0 ? options.max_jump * cell : 3 * cell + 2 * field->noise_level();
+  // The lattice (its spacing scales the jump bound), then contour.
+  const BI::Regular_lattice_3 lattice = lattice_of(options, *field, cell_size(options, samples, *field));
   std::vector<Point_3> out_points;
   std::vector<std::array<std::size_t, 3>> triangles;
-  const BI::Contouring_report report = BI::contour_signed_distance(
-      *field, out_points, triangles,
-      BI::parameters::cell_size(
-          cell, BI::parameters::maximum_jump(max_jump, BI::parameters::consistent_signs(!options.hoppe_only))));
+  const BI::Contouring_statistics report =
+      tool.parallel() ? contour<CGAL::Parallel_if_available_tag>(tool, options, lattice, *field, out_points, triangles)
+                      : contour<CGAL::Sequential_tag>(tool, options, lattice, *field, out_points, triangles);
   tool.stage("field", "evaluated the distance at " + std::to_string(report.field_evaluations) + " lattice points",
-             report.field_seconds);
-  tool.stage("contouring", "contoured " + std::to_string(triangles.size()) + " triangles", report.contouring_seconds);
+             report.seconds_field);
+  tool.stage("contouring", "contoured " + std::to_string(triangles.size()) + " triangles", report.seconds_contouring);
   print_report(tool, *field, report, read_seconds, out_points.size(), triangles.size());
   if(report.empty_output) // an empty mesh is an error, not a result
     throw BI::Empty_contour_error(report);

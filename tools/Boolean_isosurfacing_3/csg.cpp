@@ -23,19 +23,24 @@
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/boolean_isosurface_files.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
+#include <CGAL/Boolean_isosurfacing_3/overlapping_shells.h>
+#include <CGAL/Boolean_isosurfacing_3/remesh_keeping_creases.h>
+#include <CGAL/Boolean_isosurfacing_3/result_bounding_box.h>
+#include <CGAL/Boolean_isosurfacing_3/simplify_keeping_creases.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <chrono>
@@ -60,8 +65,9 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
 typedef Epick::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
-
-using biso_tools::Progress_bar;
+// Inputs and output stay in flat arrays from file to file: no halfedge
+// structure is built on the way (it was most of the process's time).
+typedef BI::Triangle_soup_3 Soup;
 
 // `expression & X`, X a new last variable: the result clipped to the solid X.
 BI::Boolean_expression and_with_new_variable(const BI::Boolean_expression& expression)
@@ -77,26 +83,45 @@ BI::Boolean_expression and_with_new_variable(const BI::Boolean_expression& expre
 }
 
 // The closed, outward triangulated box [lo, hi].
-Mesh box_mesh(const std::array<double, 3>& lo, const std::array<double, 3>& hi)
+Soup box_soup(const std::array<double, 3>& lo, const std::array<double, 3>& hi)
 {
-  Mesh m;
-  std::array<Mesh::Vertex_index, 8> v;
+  Soup box;
   // Corner k at (k & 1, (k >> 1) & 1, (k >> 2) & 1).
   for(int k = 0; k < 8; ++k)
-    v[k] = m.add_vertex(Point((k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]));
-  const int faces[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                            {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  for(const auto& f : faces)
-    m.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  return m;
+    box.points.push_back({{(k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]}});
+  box.triangles = {{{0, 2, 3}}, {{0, 3, 1}}, {{4, 5, 7}}, {{4, 7, 6}}, {{0, 1, 5}}, {{0, 5, 4}},
+                   {{2, 6, 7}}, {{2, 7, 3}}, {{0, 4, 6}}, {{0, 6, 2}}, {{1, 3, 7}}, {{1, 7, 5}}};
+  return box;
+}
+
+// A generated mesh (the demo's inputs) as a soup.
+Soup soup_of(const Mesh& mesh)
+{
+  Soup soup;
+  std::vector<std::uint32_t> index(mesh.number_of_vertices());
+  for(const Mesh::Vertex_index v : mesh.vertices())
+  {
+    index[v] = std::uint32_t(soup.points.size());
+    const Point& p = mesh.point(v);
+    soup.points.push_back({{p.x(), p.y(), p.z()}});
+  }
+  for(const Mesh::Face_index f : mesh.faces())
+  {
+    Soup::Triangle t;
+    int i = 0;
+    for(const Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
+      t[i++] = index[v];
+    soup.triangles.push_back(t);
+  }
+  return soup;
 }
 
 struct Result
 {
-  Mesh mesh;
+  Soup soup;
   BI::Marching_cubes_csg_statistics statistics;
   BI::Regular_lattice_3 lattice;
-  BI::Crease_network creases; // vertex indices of `mesh`
+  BI::Crease_network creases; // vertex indices of `soup`
 };
 
 std::size_t max_memory_bytes(const Options& options)
@@ -124,29 +149,63 @@ std::string lattice_message(const Options& options, const BI::Lattice_too_large_
   return options.lattice_flag.empty() ? message : options.lattice_flag + ": " + message;
 }
 
-CGAL::Bbox_3 bounding_box(const std::vector<Mesh>& meshes)
+CGAL::Bbox_3 bounding_box(const Soup& soup)
 {
   CGAL::Bbox_3 box;
-  for(const Mesh& m : meshes) box += PMP::bbox(m);
+  for(const auto& p : soup.points)
+    box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
   return box;
 }
 
+CGAL::Bbox_3 bounding_box(const std::vector<Soup>& soups)
+{
+  CGAL::Bbox_3 box;
+  for(const Soup& s : soups)
+    box += bounding_box(s);
+  return box;
+}
+
+// The box the lattice is sized on: where the result can be
+// (result_bounding_box()), or all the inputs' box when the result is
+// unbounded (it is clipped to that box) or cannot be anywhere.
+CGAL::Bbox_3 lattice_box(const BI::Boolean_expression& expression, const std::vector<Soup>& meshes)
+{
+  std::vector<CGAL::Bbox_3> boxes;
+  for(const Soup& m : meshes) boxes.push_back(bounding_box(m));
+  const BI::Result_bounding_box result = BI::result_bounding_box(expression, boxes);
+  return result.bounded && !result.empty ? result.box : bounding_box(meshes);
+}
+
 // The crease edges (vertex pairs) chained into polylines between corners,
-// branch points and ends; a closed crease repeats its first vertex.
-BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::vector<std::array<std::size_t, 2>>& edges,
+// branch points and ends; a closed crease repeats its first vertex.  Only
+// the vertices on creases are indexed (an output has millions of others).
+BI::Crease_network crease_polylines(const std::vector<std::array<std::size_t, 2>>& edges,
                                     const std::vector<std::size_t>& corners)
 {
   BI::Crease_network network;
   network.corners = corners;
   network.number_of_crease_edges = edges.size();
-  std::vector<std::vector<std::size_t>> incident(number_of_vertices);
+  // The crease vertices, sorted; a vertex's slot is its rank among them.
+  std::vector<std::size_t> vertices;
+  for(const auto& e : edges)
+    vertices.insert(vertices.end(), e.begin(), e.end());
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  auto slot = [&](std::size_t v) {
+    return std::size_t(std::lower_bound(vertices.begin(), vertices.end(), v) - vertices.begin());
+  };
+  std::vector<std::vector<std::size_t>> incident(vertices.size());
   for(std::size_t e = 0; e < edges.size(); ++e)
     for(std::size_t v : edges[e])
-      incident[v].push_back(e);
-  std::vector<bool> is_corner(number_of_vertices, false), used(edges.size(), false);
+      incident[slot(v)].push_back(e);
+  std::vector<bool> is_corner(vertices.size(), false), used(edges.size(), false);
   for(std::size_t v : corners)
-    is_corner[v] = true;
-  auto is_end = [&](std::size_t v) { return is_corner[v] || incident[v].size() != 2; };
+  {
+    const std::size_t s = slot(v);
+    if(s < vertices.size() && vertices[s] == v)
+      is_corner[s] = true;
+  }
+  auto is_end = [&](std::size_t s) { return is_corner[s] || incident[s].size() != 2; };
   auto walk = [&](std::size_t v, std::size_t e) {
     std::vector<std::size_t> line{v};
     while(!used[e])
@@ -154,64 +213,107 @@ BI::Crease_network crease_polylines(std::size_t number_of_vertices, const std::v
       used[e] = true;
       v = edges[e][0] == v ? edges[e][1] : edges[e][0];
       line.push_back(v);
-      if(is_end(v))
+      const std::size_t s = slot(v);
+      if(is_end(s))
         break;
-      e = incident[v][0] == e ? incident[v][1] : incident[v][0];
+      e = incident[s][0] == e ? incident[s][1] : incident[s][0];
     }
     network.polylines.push_back(std::move(line));
   };
-  for(std::size_t v = 0; v < number_of_vertices; ++v)
-    if(is_end(v))
-      for(std::size_t e : incident[v])
+  for(std::size_t s = 0; s < vertices.size(); ++s)
+    if(is_end(s))
+      for(std::size_t e : incident[s])
         if(!used[e])
-          walk(v, e);
+          walk(vertices[s], e);
   for(std::size_t e = 0; e < edges.size(); ++e)
     if(!used[e])
       walk(edges[e][0], e); // a closed loop without corner
   return network;
 }
 
-// The lattice encloses `box` (the inputs' bounding box) with `margin_cells`;
-// the library's default lattice keeps the box's faces off the lattice planes.
-Result run_csg(const std::vector<Mesh>& meshes, const BI::Boolean_expression& expression, const Options& options,
-               const CGAL::Bbox_3& box, std::size_t margin_cells = 1)
+// --simplify / --remesh on the result, its creases and corners kept.  They
+// work on a halfedge mesh, built here only when asked for; the soup and the
+// features are then replaced by the processed mesh's (compacted: vertex i is
+// soup point i).
+void post_process(Soup& soup, BI::Marching_cubes_csg_features& features, const Options& options, double spacing)
 {
-  const BI::Regular_lattice_3 lattice =
-      options.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells, margin_cells)
-                        : BI::Regular_lattice_3::enclosing(box, options.spacing, margin_cells);
+  if(soup.triangles.empty() || (!options.simplify && !options.remesh))
+    return;
   Mesh output;
+  {
+    std::vector<Point> points;
+    points.reserve(soup.points.size());
+    for(const auto& p : soup.points)
+      points.emplace_back(p[0], p[1], p[2]);
+    PMP::polygon_soup_to_polygon_mesh(points, soup.triangles, output);
+  }
   auto crease = output.add_property_map<Mesh::Edge_index, bool>("e:csg_crease", false).first;
   auto corner = output.add_property_map<Mesh::Vertex_index, bool>("v:csg_corner", false).first;
-  const Progress_bar progress(options.quiet);
-  BI::Marching_cubes_csg_statistics statistics;
-  const auto np =
-      BI::parameters::sharp_features(
-          options.features,
-          BI::parameters::feature_angle(
-              options.feature_angle,
-              BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::progress(progress))))
-          .edge_is_constrained_map(crease)
-          .vertex_is_constrained_map(corner);
-#ifdef CGAL_LINKED_WITH_TBB
-  if(options.parallel)
-    statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(meshes, expression, lattice, output, np);
+  // polygon_soup_to_polygon_mesh() keeps the points' order on a valid soup.
+  for(const auto& e : features.crease_edges)
+  {
+    const auto h = halfedge(Mesh::Vertex_index(Mesh::size_type(e[0])), Mesh::Vertex_index(Mesh::size_type(e[1])), output);
+    if(h.second)
+      crease[edge(h.first, output)] = true;
+  }
+  for(std::size_t v : features.corner_vertices)
+    corner[Mesh::Vertex_index(Mesh::size_type(v))] = true;
+  const auto maps = CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner);
+  if(options.simplify)
+    BI::simplify_keeping_creases(output, options.simplify_cells * spacing, maps);
   else
-#endif
-    statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(meshes, expression, lattice, output, np);
-  // A fresh Surface_mesh: vertex i is soup point i.
-  std::vector<std::array<std::size_t, 2>> edges;
-  std::vector<std::size_t> corners;
+    BI::remesh_keeping_creases(output, options.remesh_length > 0 ? options.remesh_length : spacing, maps);
+  output.collect_garbage();
+  soup = soup_of(output);
+  features = BI::Marching_cubes_csg_features();
   for(const Mesh::Edge_index e : output.edges())
     if(crease[e])
-      edges.push_back({{std::size_t(output.vertex(e, 0)), std::size_t(output.vertex(e, 1))}});
+    {
+      const std::size_t a = std::size_t(output.vertex(e, 0)), b = std::size_t(output.vertex(e, 1));
+      features.crease_edges.push_back({{(std::min)(a, b), (std::max)(a, b)}});
+    }
   for(const Mesh::Vertex_index v : output.vertices())
     if(corner[v])
-      corners.push_back(std::size_t(v));
-  BI::Crease_network creases = crease_polylines(output.number_of_vertices(), edges, corners);
-  // Not part of the written mesh.
-  output.remove_property_map(crease);
-  output.remove_property_map(corner);
-  return {std::move(output), std::move(statistics), lattice, std::move(creases)};
+      features.corner_vertices.push_back(std::size_t(v));
+}
+
+// The lattice encloses `box` (the inputs' bounding box) with `margin_cells`;
+// the library's default lattice keeps the box's faces off the lattice planes.
+Result run_csg(const std::vector<Soup>& meshes, const BI::Boolean_expression& expression, const Options& options,
+               const CGAL::Bbox_3& box, std::size_t margin_cells = 1)
+{
+  Result r{Soup(), BI::Marching_cubes_csg_statistics(),
+           options.cells > 0 ? BI::Regular_lattice_3::enclosing_with_cells(box, options.cells, margin_cells)
+                             : BI::Regular_lattice_3::enclosing(box, options.spacing, margin_cells),
+           BI::Crease_network()};
+  BI::Marching_cubes_csg_features features;
+  const auto np = BI::parameters::sharp_features(
+      options.features,
+      BI::parameters::feature_angle(
+          options.feature_angle,
+          BI::parameters::max_memory_bytes(max_memory_bytes(options), BI::parameters::sharp_feature_output(&features))))
+      .callback(biso_tools::progress_callback("csg", "computing the CSG", options.quiet));
+#ifdef CGAL_LINKED_WITH_TBB
+  if(options.parallel)
+    r.statistics = BI::marching_cubes_csg<CGAL::Parallel_tag>(r.lattice, meshes, expression, r.soup.points,
+                                                              r.soup.triangles, np);
+  else
+#endif
+    r.statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(r.lattice, meshes, expression, r.soup.points,
+                                                                r.soup.triangles, np);
+  post_process(r.soup, features, options, r.lattice.spacing());
+  r.creases = crease_polylines(features.crease_edges, features.corner_vertices);
+  return r;
+}
+
+// The output's (signed) volume.  The output is closed by construction when
+// no lattice boundary point is inside the result, and then skips the edge
+// check (8 bytes per directed edge: more than the output itself).
+double output_volume(const Result& r, bool signed_volume = false)
+{
+  return BI::surveyor_volume(
+      r.soup, BI::parameters::signed_volume(signed_volume,
+                                            BI::parameters::check_closedness(r.statistics.boundary_points_inside != 0)));
 }
 
 // The part of the result's volume in intervals of lattice lines that hold no
@@ -229,8 +331,7 @@ void print_result(std::FILE* out, const Result& r)
                r.lattice.spacing());
   std::fprintf(out, "  classification %.3f s, edge points %.3f s, triangulation %.3f s (%zu crossings)\n",
                s.seconds_classification, s.seconds_edges, s.seconds_triangulation, s.crossings);
-  std::fprintf(out, "  output %zu vertices, %zu triangles\n", std::size_t(r.mesh.number_of_vertices()),
-               std::size_t(r.mesh.number_of_faces()));
+  std::fprintf(out, "  output %zu vertices, %zu triangles\n", r.soup.points.size(), r.soup.triangles.size());
   if(s.feature_vertices > 0 || s.plain_feature_polygons > 0)
     std::fprintf(out,
                  "  sharp features: %zu feature vertices (%zu corners), %zu crease edges in %zu polylines, "
@@ -253,15 +354,15 @@ void report_result(Tool& tool, const Result& r)
   tool.stage("classification", "classified " + std::to_string(s.lattice_points) + " lattice points",
              s.seconds_classification);
   tool.stage("edges", "placed " + std::to_string(s.crossings) + " edge crossings", s.seconds_edges);
-  tool.stage("triangulation", "triangulated " + std::to_string(r.mesh.number_of_faces()) + " triangles",
+  tool.stage("triangulation", "triangulated " + std::to_string(r.soup.triangles.size()) + " triangles",
              s.seconds_triangulation);
   biso_tools::Json_object lattice;
   lattice.set_raw("points", biso_tools::json_number_array({double(n[0]), double(n[1]), double(n[2])}));
   lattice.set("spacing", r.lattice.spacing());
   biso_tools::Json_object& j = tool.summary();
   j.set("lattice", lattice);
-  j.set("vertices", std::size_t(r.mesh.number_of_vertices()));
-  j.set("faces", std::size_t(r.mesh.number_of_faces()));
+  j.set("vertices", r.soup.points.size());
+  j.set("faces", r.soup.triangles.size());
   j.set("crossings", s.crossings);
   j.set("feature_vertices", s.feature_vertices);
   j.set("corners", s.corner_vertices);
@@ -287,13 +388,13 @@ void resolution_problem(Tool& tool, const Options& options, const std::string& t
 // expression is false wherever some inputs overlap; we cannot tell cheaply,
 // so it is never a plain success unless the expression is false everywhere
 // (A & !A).
-bool suspicious_empty_result(const Result& r, const Options& options, const std::vector<Mesh>& meshes,
+bool suspicious_empty_result(const Result& r, const Options& options, const std::vector<Soup>& meshes,
                              const BI::Boolean_expression& requested)
 {
   bool inputs_empty = true;
   for(std::size_t i = 0; i < options.files.size(); ++i)
-    inputs_empty = inputs_empty && meshes[i].number_of_faces() == 0;
-  if(r.mesh.number_of_faces() != 0 || requested.evaluate(0) || inputs_empty)
+    inputs_empty = inputs_empty && meshes[i].triangles.empty();
+  if(!r.soup.triangles.empty() || requested.evaluate(0) || inputs_empty)
     return false;
   const std::size_t n = requested.number_of_variables();
   bool satisfiable = n > 20; // too many to enumerate: assume it can be true
@@ -304,7 +405,7 @@ bool suspicious_empty_result(const Result& r, const Options& options, const std:
 
 // The warnings about what the lattice missed: one line each, at most
 // `limit` lines.  Returns their number (all of them, not only printed).
-std::size_t resolution_warnings(Tool& tool, const Result& r, const Options& options, const std::vector<Mesh>& meshes,
+std::size_t resolution_warnings(Tool& tool, const Result& r, const Options& options, const std::vector<Soup>& meshes,
                                 const CGAL::Bbox_3& box, const BI::Boolean_expression& requested)
 {
   const double longest = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
@@ -376,12 +477,18 @@ void make_directory(const std::string& dir)
 }
 
 // The volume of the exact Boolean result of `a` and `b` (PMP corefinement, Epeck).
-double exact_result_volume(const Mesh& a, const Mesh& b, const std::string& op)
+double exact_result_volume(const Soup& a, const Soup& b, const std::string& op)
 {
   typedef CGAL::Surface_mesh<Epeck::Point_3> Exact_mesh;
-  Exact_mesh a_copy, b_copy, exact_result;
-  CGAL::copy_face_graph(a, a_copy);
-  CGAL::copy_face_graph(b, b_copy);
+  auto exact_mesh = [](const Soup& s) {
+    std::vector<Epeck::Point_3> points;
+    for(const auto& p : s.points)
+      points.emplace_back(p[0], p[1], p[2]);
+    Exact_mesh m;
+    PMP::polygon_soup_to_polygon_mesh(points, s.triangles, m);
+    return m;
+  };
+  Exact_mesh a_copy = exact_mesh(a), b_copy = exact_mesh(b), exact_result;
   if(op == "union") PMP::corefine_and_compute_union(a_copy, b_copy, exact_result);
   else if(op == "intersection") PMP::corefine_and_compute_intersection(a_copy, b_copy, exact_result);
   else PMP::corefine_and_compute_difference(a_copy, b_copy, exact_result);
@@ -394,12 +501,17 @@ int run_demo(Tool& tool, Options options)
   make_directory(dir);
   biso_tools::check_output_file(dir + "/A_sphere.off");
   // The built-in pair: a sphere and a torus that cuts through it.
-  std::vector<Mesh> meshes(2);
-  BI::make_icosphere(meshes[0], Point(0, 0, 0), 1.0, 4);
-  BI::make_torus(meshes[1], Point(0.9, 0, 0), 0.8, 0.35, 96, 48);
+  std::vector<Soup> meshes(2);
+  {
+    Mesh sphere, torus;
+    BI::make_icosphere(sphere, Point(0, 0, 0), 1.0, 4);
+    BI::make_torus(torus, Point(0.9, 0, 0), 0.8, 0.35, 96, 48);
+    meshes[0] = soup_of(sphere);
+    meshes[1] = soup_of(torus);
+  }
   for(const auto& [i, name] : {std::pair<int, const char*>{0, "/A_sphere.off"}, {1, "/B_torus.off"}})
   {
-    CGAL::IO::write_polygon_mesh(dir + name, meshes[i], CGAL::parameters::stream_precision(17));
+    BI::IO::write_triangle_soup(dir + name, meshes[i]);
     tool.output(dir + name);
   }
   std::FILE* out = tool.human();
@@ -407,7 +519,7 @@ int run_demo(Tool& tool, Options options)
                "Marching Cubes CSG of a sphere (A, %zu triangles) and a torus through it (B, %zu triangles),\n"
                "written with the results to %s/.  'exact' is the volume of the exact Boolean result\n"
                "of the same polyhedra (PMP corefinement with Epeck).\n\n",
-               std::size_t(meshes[0].number_of_faces()), std::size_t(meshes[1].number_of_faces()), dir.c_str());
+               meshes[0].triangles.size(), meshes[1].triangles.size(), dir.c_str());
   const std::pair<const char*, BI::Boolean_expression> operations[] = {
       {"union", BI::Boolean_expression::union_of(2)},
       {"intersection", BI::Boolean_expression::intersection_of(2)},
@@ -419,15 +531,15 @@ int run_demo(Tool& tool, Options options)
     const std::string op = name;
     const double exact = exact_result_volume(meshes[0], meshes[1], op);
     const Result r = run_csg(meshes, expression, options, bounding_box(meshes));
-    const double ours = BI::surveyor_volume(r.mesh);
+    const double ours = output_volume(r);
     std::fprintf(out, "%s (%s)\n", name, expression.to_string().c_str());
     print_result(out, r);
     std::fprintf(out, "  volume %.6f   exact %.6f   relative error %.2e\n\n", ours, exact,
                  std::abs(ours - exact) / exact);
-    CGAL::IO::write_polygon_mesh(dir + "/" + op + ".off", r.mesh, CGAL::parameters::stream_precision(17));
+    BI::IO::write_triangle_soup(dir + "/" + op + ".off", r.soup);
     tool.output(dir + "/" + op + ".off");
     biso_tools::Json_object j;
-    j.set("faces", std::size_t(r.mesh.number_of_faces()));
+    j.set("faces", r.soup.triangles.size());
     j.set("volume", ours);
     j.set("exact_volume", exact);
     results.set(op, j);
@@ -441,32 +553,102 @@ std::string variable_name(std::size_t i)
   return i < 26 ? std::string(1, char('A' + i)) : "f" + std::to_string(i);
 }
 
-// Reads every input; an inward-oriented one is accepted with a note.
-std::vector<Mesh> read_inputs(Tool& tool, const std::vector<std::string>& files)
+// Reads every input into flat arrays (checked closed and consistently
+// oriented); an inward-oriented one is accepted with a note.
+std::vector<Soup> read_inputs(Tool& tool, const std::vector<std::string>& files)
 {
   const biso_tools::Stopwatch watch;
-  std::vector<Mesh> meshes(files.size());
+  std::vector<Soup> meshes(files.size());
   std::size_t triangles = 0;
   for(std::size_t i = 0; i < files.size(); ++i)
   {
     biso_tools::check_input_file(files[i]);
+    double signed_volume = 0;
     try
     {
-      BI::IO::read_closed_triangle_mesh(files[i], meshes[i], /* allow_inward = */ true);
+      meshes[i] = BI::IO::read_closed_triangle_soup(files[i], /* allow_inward = */ true, &signed_volume);
     }
     catch(const BI::Invalid_input_error& e)
     {
       throw biso_tools::File_error(files[i] + ": " + e.what());
     }
-    triangles += meshes[i].number_of_faces();
+    triangles += meshes[i].triangles.size();
     tool.input(files[i]);
-    if(BI::surveyor_volume(meshes[i], BI::parameters::signed_volume(true)) < 0)
+    if(meshes[i].triangulated_polygons > 0)
+      tool.note(files[i] + " (" + variable_name(i) + "): " + std::to_string(meshes[i].triangulated_polygons) +
+                " polygons with more than 3 vertices were split into triangles");
+    if(signed_volume < 0)
       tool.note(files[i] + " (" + variable_name(i) +
                 ") is oriented inward; the classification counts crossings, so it is used as the solid it bounds");
   }
   tool.stage("read", "read " + std::to_string(files.size()) + " meshes (" + std::to_string(triangles) + " triangles)",
              watch.seconds());
   return meshes;
+}
+
+// Inputs whose own shells overlap (or, with --check-inputs, intersect):
+// parity, which the classification uses, makes a doubly covered part a void
+// where Manifold and OpenSCAD take the union.  One warning per mesh.
+// The number of connected components of a soup (triangles joined by their
+// vertex indices): a union-find, cheap next to reading the file.
+std::size_t soup_components(const Soup& soup)
+{
+  std::vector<std::uint32_t> parent(soup.points.size());
+  for(std::uint32_t v = 0; v < parent.size(); ++v)
+    parent[v] = v;
+  auto find = [&](std::uint32_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(const Soup::Triangle& t : soup.triangles)
+    for(int k = 1; k < 3; ++k)
+    {
+      const std::uint32_t a = find(t[0]), b = find(t[k]);
+      if(a != b)
+        parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+  std::vector<bool> used(soup.points.size(), false);
+  for(const Soup::Triangle& t : soup.triangles)
+    used[t[0]] = true;
+  std::size_t components = 0;
+  for(std::uint32_t v = 0; v < parent.size(); ++v)
+    components += used[v] && find(v) == v ? 1 : 0;
+  return components;
+}
+
+void overlap_warnings(Tool& tool, const Options& options, const std::vector<Soup>& meshes)
+{
+  for(std::size_t i = 0; i < options.files.size(); ++i)
+  {
+    // A halfedge mesh is built only where there is something to check.
+    if(!options.check_inputs && soup_components(meshes[i]) < 2)
+      continue;
+    Mesh mesh;
+    try
+    {
+      BI::IO::triangle_soup_to_mesh(meshes[i], mesh);
+    }
+    catch(const BI::Invalid_input_error&)
+    {
+      continue; // non-manifold vertices: not checked (the classification counts crossings anyway)
+    }
+    const BI::Overlapping_shells_report report = BI::find_overlapping_shells(mesh, options.check_inputs);
+    if(!report.overlaps())
+      continue;
+    std::string text = options.files[i] + " (" + variable_name(i) + ")";
+    if(!report.overlapping_pairs.empty())
+    {
+      const auto& pair = report.overlapping_pairs.front();
+      text += " has overlapping shells (" + std::to_string(report.overlapping_pairs.size()) +
+              " pair(s) of its " + std::to_string(report.components) + " components, e.g. " +
+              std::to_string(pair.first) + " and " + std::to_string(pair.second) + ")";
+    }
+    else
+      text += " intersects itself";
+    tool.warning(text + ": inside is decided by parity, so a part covered twice is outside the solid "
+                        "(Manifold and OpenSCAD take the union there)");
+  }
 }
 
 // An unbounded result clipped to a box one cell beyond the inputs.
@@ -479,7 +661,7 @@ struct Clip
 
 // Adds the clipping box to `meshes` and `expression` when the result is
 // unbounded and --unbounded box.
-Clip clip_unbounded(const Options& options, const CGAL::Bbox_3& box, std::vector<Mesh>& meshes,
+Clip clip_unbounded(const Options& options, const CGAL::Bbox_3& box, std::vector<Soup>& meshes,
                     BI::Boolean_expression& expression)
 {
   Clip c;
@@ -498,7 +680,7 @@ Clip clip_unbounded(const Options& options, const CGAL::Bbox_3& box, std::vector
     c.lo[a] = box.min(a) - spacing;
     c.hi[a] = box.max(a) + spacing;
   }
-  meshes.push_back(box_mesh(c.lo, c.hi));
+  meshes.push_back(box_soup(c.lo, c.hi));
   expression = and_with_new_variable(expression);
   c.margin_cells = 2;
   return c;
@@ -519,7 +701,7 @@ void print_summary(Tool& tool, const Options& options, const Result& r, const BI
   biso_tools::Json_object& j = tool.summary();
   j.set("unbounded", unbounded);
   j.set("clipped", clip.clip);
-  if(r.mesh.number_of_faces() == 0)
+  if(r.soup.triangles.empty())
   {
     std::fprintf(out, unbounded && !clip.clip ? "  the result is all of space (no surface)\n" : "  the result is empty\n");
     if(unbounded && !clip.clip) j.set_null("volume");
@@ -527,7 +709,7 @@ void print_summary(Tool& tool, const Options& options, const Result& r, const BI
   }
   else if(unbounded && !clip.clip)
   {
-    const double complement = -BI::surveyor_volume(r.mesh, BI::parameters::signed_volume(true));
+    const double complement = -output_volume(r, true);
     std::fprintf(out, "  the result is unbounded: its surface is inward-oriented; the complement has volume %.9g\n",
                  complement);
     j.set_null("volume");
@@ -535,7 +717,7 @@ void print_summary(Tool& tool, const Options& options, const Result& r, const BI
   }
   else
   {
-    const double volume = BI::surveyor_volume(r.mesh);
+    const double volume = output_volume(r);
     std::fprintf(out, "  volume %.9g\n", volume);
     j.set("volume", volume);
   }
@@ -546,19 +728,24 @@ void write_outputs(Tool& tool, const Options& options, const Result& r)
   const biso_tools::Stopwatch watch;
   if(!options.output.empty())
   {
-    if(!CGAL::IO::write_polygon_mesh(options.output, r.mesh, CGAL::parameters::stream_precision(17)))
-      throw biso_tools::File_error(options.output + ": cannot write");
+    try
+    {
+      BI::IO::write_triangle_soup(options.output, r.soup);
+    }
+    catch(const std::runtime_error& e)
+    {
+      throw biso_tools::File_error(e.what());
+    }
     tool.output(options.output);
   }
   if(!options.creases_file.empty() || !options.corners_file.empty())
   {
-    std::vector<Point> points(r.mesh.points().begin(), r.mesh.points().end());
     try
     {
       if(!options.creases_file.empty())
-        BI::IO::write_polylines(options.creases_file, points, r.creases);
+        BI::IO::write_polylines(options.creases_file, r.soup.points, r.creases);
       if(!options.corners_file.empty())
-        BI::IO::write_corners(options.corners_file, points, r.creases);
+        BI::IO::write_corners(options.corners_file, r.soup.points, r.creases);
     }
     catch(const std::runtime_error& e)
     {
@@ -581,8 +768,9 @@ int run(Tool& tool, const Options& options)
   for(const std::string* f : {&options.output, &options.creases_file, &options.corners_file})
     if(!f->empty()) biso_tools::check_output_file(*f);
 
-  std::vector<Mesh> meshes = read_inputs(tool, options.files);
-  const CGAL::Bbox_3 box = bounding_box(meshes);
+  std::vector<Soup> meshes = read_inputs(tool, options.files);
+  overlap_warnings(tool, options, meshes);
+  const CGAL::Bbox_3 box = lattice_box(requested, meshes);
   const Clip clip = clip_unbounded(options, box, meshes, expression);
 
   const biso_tools::Stopwatch watch;

@@ -13,11 +13,10 @@
 #include <CGAL/Boolean_isosurfacing_3/MPI/distributed_marching_cubes_csg.h>
 
 #include "csg_options.h"
+#include "kernels.h"
 #include "mpi_driver.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <mpi.h>
 
@@ -31,8 +30,7 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using biso_tools::Mesh;
 using biso_tools::Usage_error;
 using biso_tools::mpi::Ranks;
 using csg_tool::Options;
@@ -85,8 +83,8 @@ void report_ranks(biso_tools::Tool& tool, const BI::Marching_cubes_csg_distribut
       {"first_layer", "last_layer", "lattice_points", "input_triangles", "vertices", "triangles",
        "extraction_seconds", "welding_seconds", "writing_seconds", "sent_kilobytes", "peak_resident_megabytes"},
       {double(s.first_layer), double(s.last_layer), double(s.rank_lattice_points), double(s.rank_input_triangles),
-       double(s.rank_vertices), double(s.rank_triangles), s.extraction_seconds, s.welding_seconds,
-       s.writing_seconds, 8.0 * double(s.sent_words) / 1e3, biso_tools::mpi::peak_resident_megabytes()},
+       double(s.rank_vertices), double(s.rank_faces), s.seconds_extraction, s.seconds_welding,
+       s.seconds_writing, 8.0 * double(s.sent_words) / 1e3, biso_tools::mpi::peak_resident_megabytes()},
       ranks);
   if(ranks.rank != 0)
     return;
@@ -131,17 +129,17 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
   const double start = MPI_Wtime();
   const BI::Marching_cubes_csg_distributed_statistics s =
       o.parallel
-          ? BI::marching_cubes_csg_distributed<CGAL::Parallel_if_available_tag>(MPI_COMM_WORLD, meshes, expression,
-                                                                                 lattice, o.output)
-          : BI::marching_cubes_csg_distributed<CGAL::Sequential_tag>(MPI_COMM_WORLD, meshes, expression, lattice,
+          ? BI::marching_cubes_csg_distributed<CGAL::Parallel_if_available_tag>(MPI_COMM_WORLD, lattice, meshes,
+                                                                                 expression, o.output)
+          : BI::marching_cubes_csg_distributed<CGAL::Sequential_tag>(MPI_COMM_WORLD, lattice, meshes, expression,
                                                                       o.output);
   const double total = MPI_Wtime() - start;
-  tool.stage("extraction", "extracted, welded and wrote " + std::to_string(s.number_of_triangles) + " triangles",
+  tool.stage("extraction", "extracted, welded and wrote " + std::to_string(s.number_of_faces) + " triangles",
              total);
   report_ranks(tool, s, ranks);
-  std::fprintf(out, "  total %.3f s (slowest extraction %.3f s)\n", total, s.max_extraction_seconds);
-  std::fprintf(out, "  output %zu vertices, %zu triangles\n", s.number_of_vertices, s.number_of_triangles);
-  if(s.number_of_triangles == 0)
+  std::fprintf(out, "  total %.3f s (slowest extraction %.3f s)\n", total, s.max_seconds_extraction);
+  std::fprintf(out, "  output %zu vertices, %zu triangles\n", s.number_of_vertices, s.number_of_faces);
+  if(s.number_of_faces == 0)
     std::fprintf(out, "  the result is empty\n");
   else
     std::fprintf(out, "  volume %.9g\n", s.volume);
@@ -151,7 +149,7 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
   biso_tools::Json_object& j = tool.summary();
   j.set("expression", expression.to_string());
   j.set("vertices", s.number_of_vertices);
-  j.set("faces", s.number_of_triangles);
+  j.set("faces", s.number_of_faces);
   j.set("volume", s.volume);
   j.set("ranks_count", size);
   return 0;
@@ -162,11 +160,6 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
 // Called by csg's main() when --distributed is on the command line.
 int csg_distributed_main(int argc, char** argv)
 {
-  biso_tools::Tool tool("csg", csg_tool::description);
-  Options options;
-  csg_tool::Option_text text;
-  csg_tool::add_options(tool, options, text);
-  return biso_tools::mpi::run_distributed(
-      tool, argc, argv, [&] { check_distributed_options(tool, options, text); },
-      [&](const Ranks& ranks) { return run(tool, options, ranks); });
+  return biso_tools::mpi::distributed_main<Options, csg_tool::Option_text>(
+      "csg", csg_tool::description, argc, argv, csg_tool::add_options, check_distributed_options, run);
 }

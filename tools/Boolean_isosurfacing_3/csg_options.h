@@ -43,6 +43,11 @@ struct Options
   std::string creases_file, corners_file;
   bool strict = false;
   bool quiet = false;
+  // Post-processing (issue 17): --simplify [D] (D in cells, default 0.1),
+  // --remesh [L] (L in the inputs' units, default the spacing).
+  bool simplify = false, remesh = false;
+  double simplify_cells = 0.1, remesh_length = 0;
+  bool check_inputs = false; // --check-inputs: the self-intersection test too
 };
 
 const char* const description =
@@ -89,7 +94,7 @@ inline BI::Boolean_expression expression_from(const Options& options, std::size_
 // The options' text, checked and converted once parsed.
 struct Option_text
 {
-  std::string cells, spacing, feature_angle, max_memory, unbounded;
+  std::string cells, spacing, feature_angle, max_memory, unbounded, simplify, remesh;
 };
 
 inline void add_options(Tool& tool, Options& o, Option_text& t)
@@ -100,7 +105,9 @@ inline void add_options(Tool& tool, Options& o, Option_text& t)
                  "a Boolean expression of the inputs: ! (not), & (and), | (or), - (difference), parentheses, "
                  "true, false")
       ->type_name("E");
-  biso_tools::add_lattice_options(app, t.cells, t.spacing, "the inputs' bounding box");
+  biso_tools::add_lattice_options(app, t.cells, t.spacing,
+                                  "the box where the result can be (A & B: the two boxes' intersection, "
+                                  "A & !B: A's box, a union: the union of the boxes)");
   app.add_option("-o,--output", o.output, "write the result to F (.off, .obj, .ply or .stl), checked before computing")
       ->type_name("F");
   app.add_option("--unbounded", t.unbounded,
@@ -117,6 +124,19 @@ inline void add_options(Tool& tool, Options& o, Option_text& t)
   app.add_option("--creases", o.creases_file, "write the crease edges as polylines (CGAL polylines text format)")
       ->type_name("F");
   app.add_option("--corners", o.corners_file, "write the corners, one 'x y z' line each")->type_name("F");
+  app.add_option("--simplify", t.simplify,
+                 "simplify the result by edge collapses keeping its creases and corners, within D cells of the "
+                 "extracted surface (default 0.1)")
+      ->expected(0, 1)
+      ->type_name("[D]");
+  app.add_option("--remesh", t.remesh,
+                 "isotropic remeshing of the result towards edges of length L (default: the lattice spacing), "
+                 "the creases and corners kept")
+      ->expected(0, 1)
+      ->type_name("[L]");
+  app.add_flag("--check-inputs", o.check_inputs,
+               "also test every input for self-intersections (exact, O(n log n)); overlapping shells of one input "
+               "are always looked for");
   app.add_flag("--strict", o.strict,
                "an input component the lattice does not resolve (no lattice point inside, or a lattice volume off "
                "by more than a factor 2), or an empty result from non-empty inputs, is an error (exit 1, nothing "
@@ -151,10 +171,10 @@ inline void check_options(Tool& tool, Options& o, const Option_text& t)
   }
   if(app.count("--cells"))
   {
-    // Each axis of a lattice has fewer than 2^31 points; whether the whole
+    // Each axis of a lattice has fewer than 2^26 points; whether the whole
     // lattice fits is decided once the inputs' box is known.
-    o.cells = biso_tools::parse_count("--cells", t.cells, 1, (std::size_t(1) << 31) - 8,
-                                      "a lattice has at most 2^31 points");
+    o.cells = biso_tools::parse_count("--cells", t.cells, 1, (std::size_t(1) << 26) - 8,
+                                      "a lattice has fewer than 2^26 points along an axis");
     o.lattice_flag = "--cells " + t.cells;
   }
   if(app.count("--spacing"))
@@ -174,6 +194,13 @@ inline void check_options(Tool& tool, Options& o, const Option_text& t)
                              !o.creases_file.empty() || !o.corners_file.empty()))
     throw Usage_error("--demo takes a directory and at most --cells or --spacing, no input file, --op, --expr or -o");
   if(o.cells > 0 && o.spacing > 0) throw Usage_error("give only one of --cells N and --spacing h");
+  o.simplify = app.count("--simplify") > 0;
+  o.remesh = app.count("--remesh") > 0;
+  if(o.simplify && !t.simplify.empty())
+    o.simplify_cells = biso_tools::parse_real("--simplify", t.simplify, biso_tools::Sign_rule::POSITIVE);
+  if(o.remesh && !t.remesh.empty())
+    o.remesh_length = biso_tools::parse_real("--remesh", t.remesh, biso_tools::Sign_rule::POSITIVE);
+  if(o.simplify && o.remesh) throw Usage_error("give at most one of --simplify and --remesh");
   if(!o.features && (!o.creases_file.empty() || !o.corners_file.empty()))
     throw Usage_error("--creases and --corners need sharp features: drop --no-features");
 }

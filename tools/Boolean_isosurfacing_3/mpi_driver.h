@@ -40,6 +40,23 @@ inline int run_distributed(Tool& tool, int argc, char** argv, const std::functio
   return status;
 }
 
+/// The whole `<tool> --distributed` entry point of a tool whose command line
+/// is `Options` (read from `Option_text`): its options, then the checks of
+/// the distributed run (`check(tool, options, text)`) and the run on every
+/// rank (`run(tool, options, ranks)`), between MPI_Init_thread and MPI_Finalize.
+template <typename Options, typename Option_text, typename AddOptions, typename Check, typename Run>
+int distributed_main(const char* name, const std::string& description, int argc, char** argv,
+                     const AddOptions& add_options, const Check& check, const Run& run)
+{
+  Tool tool(name, description);
+  Options options;
+  Option_text text;
+  add_options(tool, options, text);
+  return run_distributed(
+      tool, argc, argv, [&] { check(tool, options, text); },
+      [&](const Ranks& ranks) { return run(tool, options, ranks); });
+}
+
 inline double peak_resident_megabytes()
 {
   rusage usage;

@@ -77,20 +77,21 @@ Input read_input(Tool& tool, const Options& o)
 BI::Boolean_isosurface_statistics extract_surface(Tool& tool, const Input& in, const Options& o, Soup& soup)
 {
   const biso_tools::Stopwatch watch;
-  const BI::Boolean_isosurface_statistics s = in.grid ? extract(*in.grid, in.fields, in.expression, soup, o)
-                                                      : extract(*in.mesh, in.fields, in.expression, soup, o);
+  const Callback progress = tool.progress("extracting the surface");
+  const BI::Boolean_isosurface_statistics s = in.grid ? extract(*in.grid, in.fields, in.expression, soup, o, progress)
+                                                      : extract(*in.mesh, in.fields, in.expression, soup, o, progress);
   const double seconds = watch.seconds();
   std::fprintf(tool.human(),
                "time extraction: %.3f s (table %.3f s, extraction %.3f s, welding %.3f s; %zu of %zu tetrahedra "
                "evaluated%s)\n",
-               seconds, s.table_seconds, s.extraction_seconds, s.welding_seconds, s.number_of_evaluated_tetrahedra,
+               seconds, s.seconds_tables, s.seconds_extraction, s.seconds_welding, s.number_of_evaluated_tetrahedra,
                s.number_of_tetrahedra, parallelism(o));
   tool.stage("extraction",
              "extracted " + std::to_string(soup.polygons.size()) + " polygons from " +
                  std::to_string(s.number_of_evaluated_tetrahedra) + " tetrahedra",
              seconds);
-  tool.time("table", s.table_seconds);
-  tool.time("welding", s.welding_seconds);
+  tool.time("table", s.seconds_tables);
+  tool.time("welding", s.seconds_welding);
   tool.summary().set("evaluated_tetrahedra", s.number_of_evaluated_tetrahedra);
   return s;
 }
@@ -149,20 +150,20 @@ void print_out_of_core(Tool& tool, const Options& o, const BI::Boolean_isosurfac
   std::fprintf(out,
                "time extraction: %.3f s (%zu slabs of %zu layers; reading %.3f s, evaluation and reading %.3f s, "
                "welding and writing %.3f s; %zu of %zu tetrahedra evaluated%s)\n",
-               seconds, s.number_of_slabs, out_of_core_slab_layers(o), s.reading_seconds, s.extraction_seconds,
-               s.welding_seconds, s.number_of_evaluated_tetrahedra, s.number_of_tetrahedra,
+               seconds, s.number_of_slabs, out_of_core_slab_layers(o), s.seconds_reading, s.seconds_extraction,
+               s.seconds_welding, s.number_of_evaluated_tetrahedra, s.number_of_tetrahedra,
                o.parallel ? ", parallel" : ", sequential");
   std::fprintf(out, "time total:      %.3f s\n", total);
-  std::fprintf(out, "output:     %zu vertices, %zu polygons\n", s.number_of_vertices, s.number_of_polygons);
+  std::fprintf(out, "output:     %zu vertices, %zu polygons\n", s.number_of_vertices, s.number_of_faces);
   std::fprintf(out, "memory:     %.1f MB of field values held at most, peak resident %.1f MB\n",
                double(s.peak_field_values) * 8 / 1e6, peak_resident_megabytes());
   std::fprintf(out, "wrote %s\n", o.output.c_str());
-  tool.stage("extraction", "extracted and wrote " + std::to_string(s.number_of_polygons) + " polygons", seconds);
+  tool.stage("extraction", "extracted and wrote " + std::to_string(s.number_of_faces) + " polygons", seconds);
   tool.time("total", total);
   tool.output(o.output);
   biso_tools::Json_object& j = tool.summary();
   j.set("vertices", s.number_of_vertices);
-  j.set("faces", s.number_of_polygons);
+  j.set("faces", s.number_of_faces);
   j.set("slabs", s.number_of_slabs);
   j.set("peak_field_megabytes", double(s.peak_field_values) * 8 / 1e6);
 }
@@ -191,7 +192,7 @@ int run_out_of_core(Tool& tool, const Options& o)
     tbiso_fields::Analytic_field_source source(grid, make_fields(o.field_specs));
     print_fields(tool, o, field_count, ", evaluated slab by slab");
     print_expression(tool, o, expression);
-    s = extract_out_of_core(grid, source, expression, o);
+    s = extract_out_of_core(grid, source, expression, o, tool.progress("extracting and writing the surface"));
   }
   else
   {
@@ -200,7 +201,7 @@ int run_out_of_core(Tool& tool, const Options& o)
                                            f32 ? BI::IO::Raw_scalar_type::FLOAT32 : BI::IO::Raw_scalar_type::FLOAT64);
     print_fields(tool, o, field_count, " slab by slab");
     print_expression(tool, o, expression);
-    s = extract_out_of_core(grid, reader, expression, o);
+    s = extract_out_of_core(grid, reader, expression, o, tool.progress("extracting and writing the surface"));
   }
   print_out_of_core(tool, o, s, watch.seconds(), total.seconds());
   return 0;

@@ -69,8 +69,8 @@ void report_ranks(biso_tools::Tool& tool, const BI::Boolean_isosurface_distribut
       {"first_layer", "last_layer", "vertices", "polygons", "extraction_seconds", "reading_seconds",
        "welding_seconds", "writing_seconds", "read_megabytes", "sent_kilobytes", "field_megabytes",
        "peak_resident_megabytes", "extracted_again"},
-      {double(s.first_layer), double(s.last_layer), double(s.rank_vertices), double(s.rank_polygons),
-       s.extraction_seconds, field_seconds, s.welding_seconds, s.writing_seconds, field_megabytes,
+      {double(s.first_layer), double(s.last_layer), double(s.rank_vertices), double(s.rank_faces),
+       s.seconds_extraction, field_seconds, s.seconds_welding, s.seconds_writing, field_megabytes,
        8.0 * double(s.sent_words) / 1e3, double(s.peak_field_values) * 8 / 1e6,
        biso_tools::mpi::peak_resident_megabytes(), s.extracted_again ? 1.0 : 0.0},
       ranks);
@@ -158,17 +158,17 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
   }
   const double total = MPI_Wtime() - start;
 
-  tool.stage("extraction", "extracted, welded and wrote " + std::to_string(s.number_of_polygons) + " polygons",
+  tool.stage("extraction", "extracted, welded and wrote " + std::to_string(s.number_of_faces) + " polygons",
              total);
   report_ranks(tool, s, field_seconds, field_megabytes, ranks);
-  std::fprintf(out, "time total:      %.3f s (slowest extraction %.3f s)\n", total, s.max_extraction_seconds);
+  std::fprintf(out, "time total:      %.3f s (slowest extraction %.3f s)\n", total, s.max_seconds_extraction);
   std::fprintf(out, "output:     %zu vertices, %zu polygons (%zu tetrahedra evaluated)\n", s.number_of_vertices,
-               s.number_of_polygons, s.number_of_evaluated_tetrahedra);
+               s.number_of_faces, s.number_of_evaluated_tetrahedra);
   std::fprintf(out, "wrote %s\n", o.output.c_str());
   tool.output(o.output);
   tool.time("total", total);
   tool.summary().set("vertices", s.number_of_vertices);
-  tool.summary().set("faces", s.number_of_polygons);
+  tool.summary().set("faces", s.number_of_faces);
   tool.summary().set("ranks_count", size);
   return 0;
 }
@@ -178,11 +178,6 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
 // Called by tbiso's main() when --distributed is on the command line.
 int tbiso_distributed_main(int argc, char** argv)
 {
-  biso_tools::Tool tool("tbiso", tbiso_tool::description);
-  Options options;
-  tbiso_tool::Option_text text;
-  tbiso_tool::add_options(tool, options, text);
-  return biso_tools::mpi::run_distributed(
-      tool, argc, argv, [&] { check_distributed_options(tool, options, text); },
-      [&](const Ranks& ranks) { return run(tool, options, ranks); });
+  return biso_tools::mpi::distributed_main<Options, tbiso_tool::Option_text>(
+      "tbiso", tbiso_tool::description, argc, argv, tbiso_tool::add_options, check_distributed_options, run);
 }

@@ -6,76 +6,50 @@
 #define BISO_TOOLS_TBISO_SUMMARY_H
 
 #include "tbiso_extract.h"
+#include "tbiso_output.h"
 
+#include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_to_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/extract_crease_network.h>
+#include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
-#include <algorithm>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace tbiso_tool {
 
-// Closed: every directed edge is matched by exactly one reverse edge (so
-// each undirected edge is in exactly two consistently oriented polygons).
-struct Edge_report
+// What the library says of the surface: closed when every directed edge is
+// matched by a reverse one, so that it bounds a solid (the check of the soup
+// overload of surveyor_volume(), on the polygons' fan triangles), with its
+// volume (signed: winding-number weighted); a 2-manifold when CGAL's
+// is_polygon_soup_a_polygon_mesh() says so (what --smooth needs), with the
+// reason when it is not.
+struct Surface_check
 {
-  std::size_t border = 0, non_manifold = 0, inconsistent = 0;
-  bool closed() const { return border == 0 && non_manifold == 0 && inconsistent == 0; }
+  std::optional<double> volume; // empty: not closed
+  std::string open_reason;
+  bool manifold = true;
+  std::string non_manifold_reason;
 };
 
-inline Edge_report check_edges(const Soup& soup)
+inline Surface_check check_surface(const Soup& soup)
 {
-  struct Use
+  Surface_check result;
+  try
   {
-    std::size_t a, b;
-    bool forward;
-    bool operator<(const Use& u) const { return a != u.a ? a < u.a : (b != u.b ? b < u.b : forward < u.forward); }
-  };
-  std::vector<Use> uses;
-  for(const std::vector<std::size_t>& poly : soup.polygons)
-    for(std::size_t k = 0; k < poly.size(); ++k)
-    {
-      const std::size_t a = poly[k], b = poly[(k + 1) % poly.size()];
-      uses.push_back(a < b ? Use{a, b, true} : Use{b, a, false});
-    }
-  std::sort(uses.begin(), uses.end());
-  Edge_report report;
-  for(std::size_t i = 0; i < uses.size();)
-  {
-    std::size_t j = i + 1;
-    while(j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b)
-      ++j;
-    if(j - i == 1)
-      ++report.border;
-    else if(j - i > 2)
-      ++report.non_manifold;
-    else if(uses[i].forward == uses[i + 1].forward)
-      ++report.inconsistent;
-    i = j;
+    result.volume = BI::surveyor_volume(soup.points, fan_triangles(soup), BI::parameters::signed_volume(true));
   }
-  return report;
-}
-
-// Divergence theorem over the fan triangles of the polygons, relative to the
-// centre of the bounding box (fewer lost digits than the origin far away).
-inline double enclosed_volume(const Soup& soup)
-{
-  if(soup.points.empty())
-    return 0;
-  CGAL::Bbox_3 box;
-  for(const Point& p : soup.points)
-    box += p.bbox();
-  const K::Vector_3 centre((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
-  double volume = 0;
-  for(const std::vector<std::size_t>& poly : soup.polygons)
+  catch(const BI::Open_mesh_error& e)
   {
-    const K::Vector_3 a = soup.points[poly[0]] - CGAL::ORIGIN - centre;
-    for(std::size_t k = 1; k + 1 < poly.size(); ++k)
-      volume += CGAL::determinant(a, soup.points[poly[k]] - CGAL::ORIGIN - centre,
-                                  soup.points[poly[k + 1]] - CGAL::ORIGIN - centre);
+    result.open_reason = e.what();
   }
-  return volume / 6;
+  result.manifold = CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons);
+  if(!result.manifold)
+    result.non_manifold_reason = BI::internal::describe_non_manifold_soup(soup);
+  return result;
 }
 
 inline void print_domain(Tool& tool, const Input& in, const Options& o, double seconds)
@@ -157,27 +131,39 @@ inline void print_surface(Tool& tool, const Options& o, const Soup& soup, const 
   c.set("polylines", creases.polylines.size());
   c.set("corners", creases.corners.size());
   j.set("creases", c);
-  const Edge_report edges = check_edges(soup);
-  j.set("closed", !soup.polygons.empty() && edges.closed());
-  j.set("border_edges", edges.border);
-  j.set("non_manifold_edges", edges.non_manifold);
   if(soup.polygons.empty())
   {
     std::fprintf(out, "surface:    empty\n");
+    j.set("closed", false);
     j.set("volume", 0.0);
+    j.set_null("open_reason");
+    j.set("manifold", false);
+    j.set_null("non_manifold_reason");
+    return;
   }
-  else if(edges.closed())
+  const Surface_check check = check_surface(soup);
+  const std::string non_manifold =
+      check.manifold ? "" : ", with non-manifold edges or vertices (" + check.non_manifold_reason + ")";
+  j.set("closed", check.volume.has_value());
+  j.set("manifold", check.manifold);
+  if(check.manifold)
+    j.set_null("non_manifold_reason");
+  else
+    j.set("non_manifold_reason", check.non_manifold_reason);
+  if(check.volume)
   {
-    const double volume = enclosed_volume(soup);
-    std::fprintf(out, "surface:    closed, volume %.15g%s\n", volume, o.smooth_iterations ? " (after smoothing)" : "");
-    j.set("volume", volume);
+    std::fprintf(out, "surface:    closed, volume %.15g%s%s\n", *check.volume,
+                 o.smooth_iterations ? " (after smoothing)" : "", biso_tools::printable(non_manifold).c_str());
+    j.set("volume", *check.volume);
+    j.set_null("open_reason");
   }
   else
   {
-    std::fprintf(out, "surface:    not closed (%zu border edges, %zu non-manifold edges, %zu inconsistent edges)%s\n",
-                 edges.border, edges.non_manifold, edges.inconsistent,
+    std::fprintf(out, "surface:    not closed (%s)%s%s\n", biso_tools::printable(check.open_reason).c_str(),
+                 biso_tools::printable(non_manifold).c_str(),
                  o.close ? "" : "; --close closes it on the domain boundary");
     j.set_null("volume");
+    j.set("open_reason", check.open_reason);
   }
 }
 

@@ -15,20 +15,18 @@
 // apply (doc/Boolean_isosurfacing_3/tools.md).
 
 #include "cli.h"
+#include "kernels.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 
 #include <cerrno>
@@ -47,10 +45,9 @@ namespace {
 
 namespace BI = CGAL::Boolean_isosurfacing;
 namespace PMP = CGAL::Polygon_mesh_processing;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
-typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
-typedef Epick::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
+using biso_tools::Mesh;
+using biso_tools::Point;
+using biso_tools::exact_volume;
 
 using biso_tools::Tool;
 
@@ -68,13 +65,6 @@ const char* const description =
     "volume: the Surveyor's-formula volume of closed triangle meshes (OFF, OBJ, PLY, STL)\n"
     "usage: volume [--check] [--signed] [--no-self-intersection-check] FILE...\n"
     "       volume --demo DIR\n";
-
-double exact_volume(const Mesh& mesh)
-{
-  CGAL::Surface_mesh<Epeck::Point_3> exact_mesh;
-  CGAL::copy_face_graph(mesh, exact_mesh);
-  return CGAL::to_double(CGAL::exact(PMP::volume(exact_mesh)));
-}
 
 double relative_error(double value, double reference)
 {

@@ -27,25 +27,6 @@ struct Boolean_isosurface_statistics : Algorithm_statistics
   double seconds_extraction = 0;
   /// Welding the pieces of the parallel chunks into one soup.
   double seconds_welding = 0;
-  /// \deprecated the same as `number_of_faces`.
-  std::size_t number_of_polygons = 0;
-  /// \deprecated the same as `seconds_tables`.
-  double table_seconds = 0;
-  /// \deprecated the same as `seconds_extraction`.
-  double extraction_seconds = 0;
-  /// \deprecated the same as `seconds_welding`.
-  double welding_seconds = 0;
-
-  /// \cond SKIP_IN_MANUAL
-  // Fills the deprecated names from the new ones.
-  void set_deprecated_names()
-  {
-    number_of_polygons = number_of_faces;
-    table_seconds = seconds_tables;
-    extraction_seconds = seconds_extraction;
-    welding_seconds = seconds_welding;
-  }
-  /// \endcond
 };
 
 } // namespace Boolean_isosurfacing

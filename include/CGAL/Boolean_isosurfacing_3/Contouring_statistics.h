@@ -46,14 +46,7 @@ struct Contouring_statistics : Algorithm_statistics
   bool empty_output = false;
   double seconds_field = 0;                      ///< evaluating f at lattice points
   double seconds_contouring = 0;                 ///< traversal + triangles, without field time
-  std::size_t number_of_triangles = 0;           ///< \deprecated the same as `number_of_faces`
-  double field_seconds = 0;                      ///< \deprecated the same as `seconds_field`
-  double contouring_seconds = 0;                 ///< \deprecated the same as `seconds_contouring`
 };
-
-/// \ingroup PkgBooleanIsosurfacing3Ref
-/// \deprecated the former name of `Contouring_statistics`.
-typedef Contouring_statistics Contouring_report;
 
 } // namespace Boolean_isosurfacing
 } // namespace CGAL

@@ -10,7 +10,6 @@
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Mesh_triangles_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 
@@ -21,10 +20,12 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -42,12 +43,15 @@ namespace Boolean_isosurfacing {
 /// combinatorial decision (those are exact).  `triangle` is the crossed
 /// triangle: its number among the triangles of all meshes, mesh 0 first, each
 /// mesh's faces in `faces()` order (it gives `marching_cubes_csg()` the exact
-/// tangent plane of the crossing).
+/// tangent plane of the crossing).  16 bytes: the index and the mesh share
+/// one word (a lattice has fewer than 2^26 points along an axis, and there
+/// are at most 64 meshes), because the crossings are most of the memory of
+/// a fine lattice.
 struct Lattice_crossing
 {
   double position;
-  std::uint32_t index;
-  std::uint32_t mesh;
+  std::uint32_t index : 26;
+  std::uint32_t mesh : 6;
   std::uint32_t triangle = 0;
 };
 
@@ -79,11 +83,18 @@ struct Lattice_crossing
  * projection (3 exact orient2d); the crossing's index along the line is a
  * double estimate corrected by exact orient3d tests.  The x lines give the
  * classification (toggle the mesh bit at each crossing index, then a prefix
- * XOR along the line): O(points + crossings + triangles), no sorting of
+ * XOR along the line): O(lines + crossings + triangles), no sorting of
  * lattice points, no ray shooting.
  *
- * Memory: one mask of 1, 2, 4 or 8 bytes (up to 8, 16, 32, 64 meshes) per
- * lattice point, plus 16 bytes per crossing and 8 bytes per lattice line.
+ * The classification is stored *sparsely*: a point's mask is the mask of the
+ * first point of its x line (`start_mask()`) toggled by the crossings of the
+ * line before it, so no per-point array exists, and only the lines that hold
+ * crossings (or, along x, start inside a mesh) are stored.  Memory: 16 bytes
+ * per crossing, 8 per stored line (16 along x) and 8 per row of lines, so it
+ * grows with the surface, not with the lattice's volume nor its
+ * cross-sections.  `mask()` and `crossings_on_line()` find their line by a
+ * binary search in its row; algorithms walk the stored lines of a row
+ * (`stored_lines()`).
  */
 class Lattice_classifier_3
 {
@@ -108,6 +119,9 @@ public:
   };
 
   static constexpr std::size_t max_number_of_meshes = 64;
+  /// Points along an axis must be fewer than this (2^26): the width of
+  /// `Lattice_crossing::index`.
+  static constexpr std::size_t max_points_per_axis = std::size_t(1) << 26;
   /// Default of the named parameter `max_memory_bytes`: 8 GiB.
   static constexpr std::size_t default_max_memory_bytes = std::size_t(8) << 30;
 
@@ -119,7 +133,10 @@ public:
    * \tparam TriangleMeshRange a range of models of `FaceListGraph` (or of
    *         `std::reference_wrapper`s to them) with triangle faces; the
    *         points of their `vertex_point` maps have `x()`, `y()`, `z()`
-   *         convertible to double by `CGAL::to_double()`.
+   *         convertible to double by `CGAL::to_double()`.  Its elements may
+   *         also be `Triangle_soup_3`s (flat arrays, as the package's readers
+   *         give them: no mesh to build), checked to be closed by the
+   *         linear-time edge test; a soup may have non-manifold vertices.
    *
    * \param meshes the closed triangle meshes; bit m of a point's mask is mesh m
    * \param lattice the lattice whose points are classified
@@ -189,7 +206,7 @@ public:
     std::vector<internal::Lattice_triangle> triangles;
     std::size_t total_faces = 0;
     for(const auto& element : meshes)
-      total_faces += std::size_t(num_faces(internal::unwrap_mesh(element)));
+      total_faces += internal::number_of_input_faces(internal::unwrap_mesh(element));
     triangles.reserve(total_faces);
     std::uint32_t m = 0;
     for(const auto& element : meshes)
@@ -206,20 +223,21 @@ public:
                                                  const internal::Progress& progress)
   {
     Lattice_classifier_3 result(lattice, number_of_meshes);
-    if(number_of_meshes <= 8)
-      result.template run<ConcurrencyTag, std::uint8_t>(triangles, max_memory_bytes, reserved_bytes, progress);
-    else if(number_of_meshes <= 16)
-      result.template run<ConcurrencyTag, std::uint16_t>(triangles, max_memory_bytes, reserved_bytes, progress);
-    else if(number_of_meshes <= 32)
-      result.template run<ConcurrencyTag, std::uint32_t>(triangles, max_memory_bytes, reserved_bytes, progress);
-    else
-      result.template run<ConcurrencyTag, std::uint64_t>(triangles, max_memory_bytes, reserved_bytes, progress);
+    result.template run<ConcurrencyTag>(triangles, max_memory_bytes, reserved_bytes, progress);
     return result;
   }
-
-  static std::size_t bytes_per_mask(std::size_t number_of_meshes)
+  // Frees the crossings and the stored lines (marching_cubes_csg() needs
+  // them no more once its vertices are placed): the classifier then holds
+  // no line, and only lattice() and number_of_meshes() remain meaningful.
+  void release_crossings()
   {
-    return number_of_meshes <= 8 ? 1 : (number_of_meshes <= 16 ? 2 : (number_of_meshes <= 32 ? 4 : 8));
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      std::vector<Crossing>().swap(m_crossings[axis]);
+      std::vector<Line_entry>(1, Line_entry{0, 0}).swap(m_lines[axis]);
+      std::vector<std::size_t>(m_row_begin[axis].size(), 0).swap(m_row_begin[axis]);
+    }
+    std::vector<std::uint64_t>().swap(m_start_masks);
   }
   /// \endcond
 
@@ -231,23 +249,84 @@ public:
   /// The number of meshes (bits of a mask).
   std::size_t number_of_meshes() const { return m_number_of_meshes; }
 
-  /// Bytes per lattice point of the masks: 1, 2, 4 or 8.
-  std::size_t bytes_per_mask() const { return bytes_per_mask(m_number_of_meshes); }
+  /// Bit m set iff the first point (i = 0) of x line `x_line` (see
+  /// `line_index()`) is inside mesh m.
+  std::uint64_t start_mask(std::size_t x_line) const
+  {
+    CGAL_precondition(x_line < number_of_lines(0));
+    const std::size_t e = find_line(0, x_line);
+    return e == no_line ? 0 : m_start_masks[e];
+  }
 
-  /// Bit m set iff lattice point `linear_index` is inside mesh m.
+  /// A line along an axis that holds crossings (or, along x, whose first
+  /// point is inside a mesh): its index `u` within its row, its crossings
+  /// and (along x) its start mask.
+  struct Stored_line
+  {
+    std::size_t u;
+    Crossing_range crossings;
+    std::uint64_t start_mask;
+  };
+
+  /// The stored lines of row `v` along `axis` (the lines whose v index is
+  /// `v`, see `line_index()`), by increasing u: a random-access range of
+  /// `Stored_line`.  Every other line of the row has no crossing and (along
+  /// x) starts outside every mesh.
+  class Stored_lines
+  {
+  public:
+    Stored_lines(const Lattice_classifier_3& c, int axis, std::size_t v)
+      : m_c(&c), m_axis(axis), m_first(c.m_row_begin[axis][v]), m_last(c.m_row_begin[axis][v + 1])
+    {}
+    std::size_t size() const { return m_last - m_first; }
+    bool empty() const { return m_first == m_last; }
+    Stored_line operator[](std::size_t k) const { return m_c->stored_line(m_axis, m_first + k); }
+
+  private:
+    const Lattice_classifier_3* m_c;
+    int m_axis;
+    std::size_t m_first, m_last;
+  };
+
+  /// The stored lines of row `v` along `axis`.
+  Stored_lines stored_lines(int axis, std::size_t v) const
+  {
+    CGAL_precondition(0 <= axis && axis < 3 && v + 1 < m_row_begin[axis].size());
+    return Stored_lines(*this, axis, v);
+  }
+
+  /// The number of rows of lines along `axis` (the number of lattice points
+  /// along its v axis).
+  std::size_t number_of_rows(int axis) const { return m_row_begin[axis].size() - 1; }
+
+  /// Bit m set iff lattice point (i, j, k) is inside mesh m: the line's
+  /// start mask toggled by the crossings before the point (O(crossings on
+  /// the x line)).
+  std::uint64_t mask(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    CGAL_precondition(i < m_lattice.number_of_points(0) && j < m_lattice.number_of_points(1) &&
+                      k < m_lattice.number_of_points(2));
+    const std::size_t line = line_index(0, i, j, k);
+    const std::size_t e = find_line(0, line);
+    if(e == no_line)
+      return 0;
+    const Stored_line stored = stored_line(0, e);
+    std::uint64_t mask = stored.start_mask;
+    for(const Crossing& c : stored.crossings)
+    {
+      if(c.index > i)
+        break;
+      mask ^= std::uint64_t(1) << c.mesh;
+    }
+    return mask;
+  }
+  /// The mask of the lattice point of index `linear_index` (`Regular_lattice_3::linear_index()`).
   std::uint64_t mask(std::size_t linear_index) const
   {
     CGAL_precondition(linear_index < m_lattice.total_number_of_points());
-    switch(bytes_per_mask())
-    {
-    case 1: return m_masks8[linear_index];
-    case 2: return m_masks16[linear_index];
-    case 4: return m_masks32[linear_index];
-    default: return m_masks64[linear_index];
-    }
+    const std::size_t nx = m_lattice.number_of_points(0), ny = m_lattice.number_of_points(1);
+    return mask(linear_index % nx, (linear_index / nx) % ny, linear_index / (nx * ny));
   }
-  /// The mask of lattice point (i, j, k).
-  std::uint64_t mask(std::size_t i, std::size_t j, std::size_t k) const { return mask(m_lattice.linear_index(i, j, k)); }
 
   /// true iff lattice point (i, j, k) is inside mesh `mesh`.
   bool is_inside(std::size_t mesh, std::size_t i, std::size_t j, std::size_t k) const
@@ -255,23 +334,15 @@ public:
     return ((mask(i, j, k) >> mesh) & 1) != 0;
   }
 
-  /// Calls `f(const Mask* masks)` with the mask array (indexed by
-  /// `Regular_lattice_3::linear_index()`), `Mask` the unsigned type of
-  /// `bytes_per_mask()` bytes, and returns what `f` returns.
-  template <typename F>
-  decltype(auto) visit_masks(F&& f) const
+  /// Number of lattice lines along `axis` (stored or not).
+  std::size_t number_of_lines(int axis) const
   {
-    switch(bytes_per_mask())
-    {
-    case 1: return f(m_masks8.data());
-    case 2: return f(m_masks16.data());
-    case 4: return f(m_masks32.data());
-    default: return f(m_masks64.data());
-    }
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    return n[internal::line_u_axis(axis)] * n[internal::line_v_axis(axis)];
   }
 
-  /// Number of lattice lines along `axis`.
-  std::size_t number_of_lines(int axis) const { return m_line_begin[axis].size() - 1; }
+  /// Number of stored lines along `axis` (see `stored_lines()`).
+  std::size_t number_of_stored_lines(int axis) const { return m_row_begin[axis].back(); }
 
   /// Index of the line along `axis` through point (i, j, k): the two other
   /// indices, the smaller axis varying fastest.
@@ -291,8 +362,8 @@ public:
   Crossing_range crossings_on_line(int axis, std::size_t line) const
   {
     CGAL_precondition(0 <= axis && axis < 3 && line < number_of_lines(axis));
-    const Crossing* base = m_crossings[axis].data();
-    return Crossing_range(base + m_line_begin[axis][line], base + m_line_begin[axis][line + 1]);
+    const std::size_t e = find_line(axis, line);
+    return e == no_line ? Crossing_range() : stored_line(axis, e).crossings;
   }
 
   /// The crossings on the lattice edge from (i, j, k) to its neighbour along
@@ -335,37 +406,99 @@ public:
   /// edge.  Zero by construction for closed meshes; O(points + crossings).
   std::size_t number_of_inconsistent_edges() const
   {
-    return visit_masks([this](const auto* masks) {
-      typedef std::remove_const_t<std::remove_pointer_t<decltype(masks)>> Mask;
-      const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
-      const std::array<std::size_t, 3> stride{{1, n[0], n[0] * n[1]}};
-      std::size_t bad = 0;
-      for(int axis = 0; axis < 3; ++axis)
+    const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    const std::size_t nx = n[0], ny = n[1], nz = n[2];
+    std::size_t bad = 0;
+    // Toggles of the crossings on one edge (index t) from `c` on; counts
+    // crossings out of order or out of range as inconsistent.
+    auto toggles_at = [](const Crossing*& c, const Crossing* end, std::size_t t) {
+      std::uint64_t toggles = 0;
+      for(; c != end && c->index == t; ++c)
+        toggles ^= std::uint64_t(1) << c->mesh;
+      return toggles;
+    };
+    // The masks of plane k, from the x lines (which define them).
+    auto plane_masks = [&](std::size_t k, std::vector<std::uint64_t>& masks) {
+      for(std::size_t j = 0; j < ny; ++j)
       {
-        const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
-        for(std::size_t jv = 0; jv < n[v]; ++jv)
-          for(std::size_t ju = 0; ju < n[u]; ++ju)
-          {
-            const Crossing_range line = crossings_on_line(axis, ju + n[u] * jv);
-            const std::size_t start = ju * stride[u] + jv * stride[v];
-            const Crossing* c = line.begin();
-            for(std::size_t t = 1; t < n[axis]; ++t)
-            {
-              Mask toggles = 0;
-              for(; c != line.end() && c->index == t; ++c)
-                toggles ^= Mask(Mask(1) << c->mesh);
-              const Mask change = Mask(masks[start + (t - 1) * stride[axis]] ^ masks[start + t * stride[axis]]);
-              bad += std::size_t(internal::popcount64(std::uint64_t(Mask(change ^ toggles))));
-            }
-            if(c != line.end()) // crossings out of order or out of range
-              bad += std::size_t(line.end() - c);
-          }
+        const Crossing_range line = crossings_on_line(0, j + ny * k);
+        const Crossing* c = line.begin();
+        std::uint64_t mask = start_mask(j + ny * k);
+        for(std::size_t i = 0; i < nx; ++i)
+        {
+          mask ^= i == 0 ? 0 : toggles_at(c, line.end(), i);
+          masks[i + nx * j] = mask;
+        }
+        if(c != line.end())
+          bad += std::size_t(line.end() - c);
       }
-      return bad;
-    });
+    };
+    std::vector<std::uint64_t> low(nx * ny), high(nx * ny);
+    // Cursors of the z lines, advanced plane by plane.
+    std::vector<const Crossing*> z_cursor(nx * ny);
+    for(std::size_t l = 0; l < nx * ny; ++l)
+      z_cursor[l] = crossings_on_line(2, l).begin();
+    for(std::size_t k = 0; k < nz; ++k)
+    {
+      plane_masks(k, high);
+      for(std::size_t i = 0; i < nx; ++i)
+      {
+        const Crossing_range line = crossings_on_line(1, i + nx * k);
+        const Crossing* c = line.begin();
+        for(std::size_t j = 1; j < ny; ++j)
+        {
+          const std::uint64_t change = high[i + nx * (j - 1)] ^ high[i + nx * j];
+          bad += std::size_t(internal::popcount64(change ^ toggles_at(c, line.end(), j)));
+        }
+        if(c != line.end())
+          bad += std::size_t(line.end() - c);
+      }
+      if(k > 0)
+        for(std::size_t l = 0; l < nx * ny; ++l)
+        {
+          const std::uint64_t change = low[l] ^ high[l];
+          bad += std::size_t(internal::popcount64(change ^ toggles_at(z_cursor[l], crossings_on_line(2, l).end(), k)));
+        }
+      std::swap(low, high);
+    }
+    for(std::size_t l = 0; l < nx * ny; ++l)
+      bad += std::size_t(crossings_on_line(2, l).end() - z_cursor[l]);
+    return bad;
   }
 
 private:
+  // Offsets of the lines into the crossings of their axis (checked to fit).
+  typedef std::uint32_t Line_offset;
+
+  // A stored line: its u index and its first crossing (the next entry's
+  // `first` ends its crossings; a last entry per axis closes the array).
+  struct Line_entry
+  {
+    std::uint32_t u;
+    Line_offset first;
+  };
+  static constexpr std::size_t no_line = std::size_t(-1);
+
+  // The entry of a line (u + nu * v), or no_line: a binary search in its row.
+  std::size_t find_line(int axis, std::size_t line) const
+  {
+    const std::size_t nu = m_lattice.number_of_points(internal::line_u_axis(axis));
+    const std::size_t u = line % nu, v = line / nu;
+    const Line_entry* first = m_lines[axis].data() + m_row_begin[axis][v];
+    const Line_entry* last = m_lines[axis].data() + m_row_begin[axis][v + 1];
+    const Line_entry* e =
+        std::lower_bound(first, last, u, [](const Line_entry& x, std::size_t value) { return x.u < value; });
+    return e != last && e->u == u ? std::size_t(e - m_lines[axis].data()) : no_line;
+  }
+
+  Stored_line stored_line(int axis, std::size_t e) const
+  {
+    const Crossing* base = m_crossings[axis].data();
+    const Line_entry* entry = m_lines[axis].data() + e;
+    return Stored_line{entry->u, Crossing_range(base + entry[0].first, base + entry[1].first),
+                       axis == 0 ? m_start_masks[e] : 0};
+  }
+
   // One crossing of a row of lines (the lines along an axis with a common v index).
   struct Row_crossing
   {
@@ -401,22 +534,6 @@ private:
     : m_lattice(lattice), m_number_of_meshes(number_of_meshes)
   {}
 
-  template <typename Mask>
-  using Mask_vector = std::vector<Mask, internal::Default_init_allocator<Mask>>;
-
-  template <typename Mask>
-  Mask_vector<Mask>& mask_storage()
-  {
-    if constexpr(std::is_same<Mask, std::uint8_t>::value)
-      return m_masks8;
-    else if constexpr(std::is_same<Mask, std::uint16_t>::value)
-      return m_masks16;
-    else if constexpr(std::is_same<Mask, std::uint32_t>::value)
-      return m_masks32;
-    else
-      return m_masks64;
-  }
-
   // A perturbed line through (u + du, v + dv) can only cross a triangle if
   // umin <= u < umax and vmin <= v < vmax (the perturbation is positive).
   Line_block line_block(const internal::Lattice_triangle& t, int axis,
@@ -441,11 +558,17 @@ private:
     return b;
   }
 
-  template <typename ConcurrencyTag, typename Mask>
+  template <typename ConcurrencyTag>
   void run(const std::vector<internal::Lattice_triangle>& triangles, std::size_t max_memory_bytes,
            std::size_t reserved_bytes, const internal::Progress& progress)
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
+    for(int a = 0; a < 3; ++a)
+      if(n[a] >= max_points_per_axis)
+        throw Lattice_too_large_error("the lattice has " + std::to_string(n[a]) + " points along " +
+                                      std::string(1, char('x' + a)) + "; at most " +
+                                      std::to_string(max_points_per_axis - 1) +
+                                      " are supported: use a larger spacing");
     const std::size_t T = triangles.size();
     // The lattice coordinates, computed once by the one formula.
     std::array<std::vector<double>, 3> coordinates;
@@ -465,44 +588,62 @@ private:
       blocks[axis].resize(T);
       internal::concurrent_for<ConcurrencyTag>(
           T, [&](std::size_t t) { blocks[axis][t] = line_block(triangles[t], axis, coordinates); });
-      for(const Line_block& b : blocks[axis])
-        if(!b.empty())
+      const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
+      const double cell_area = m_lattice.spacing() * m_lattice.spacing();
+      for(std::size_t t = 0; t < T; ++t)
+      {
+        const Line_block& b = blocks[axis][t];
+        if(b.empty())
+          continue;
+        // The lines through a triangle's projection are lattice points of a
+        // convex region: at most area / r^2 + perimeter / (2 r) + 1 of them
+        // (Nosarzewska's bound), and at most its block.
+        const auto& q = triangles[t].p;
+        const double area = 0.5 * std::abs((q[1][u] - q[0][u]) * (q[2][v] - q[0][v]) -
+                                           (q[2][u] - q[0][u]) * (q[1][v] - q[0][v]));
+        double perimeter = 0;
+        for(int e = 0; e < 3; ++e)
         {
-          candidates[axis] += b.size();
-          binned[axis] += b.v1 - b.v0;
+          const double du = q[(e + 1) % 3][u] - q[e][u], dv = q[(e + 1) % 3][v] - q[e][v];
+          perimeter += std::sqrt(du * du + dv * dv);
         }
+        const double bound = area / cell_area + perimeter / (2 * m_lattice.spacing()) + 1;
+        candidates[axis] += std::size_t((std::min)(double(b.size()), bound));
+        binned[axis] += b.v1 - b.v0;
+      }
     }
-    check_memory(triangles.size(), candidates, binned, sizeof(Mask), max_memory_bytes, reserved_bytes);
-
-    // Not initialized here: the x pass writes every entry, in parallel.
-    Mask_vector<Mask>& masks = mask_storage<Mask>();
-    masks.clear();
-    masks.resize(m_lattice.total_number_of_points());
+    check_memory(triangles.size(), candidates, binned, max_memory_bytes, reserved_bytes);
 
     const double weights[4] = {0, 0.5, 0.75, 1.0};
     for(int axis = 0; axis < 3; ++axis)
     {
       const auto start = std::chrono::steady_clock::now();
-      process_axis<ConcurrencyTag, Mask>(axis, triangles, blocks[axis], coordinates, masks,
-                                         progress.part(weights[axis], weights[axis + 1]));
+      process_axis<ConcurrencyTag>(axis, triangles, blocks[axis], coordinates,
+                                   progress.part(weights[axis], weights[axis + 1]));
       std::vector<Line_block>().swap(blocks[axis]);
       m_seconds[axis] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   }
 
   void check_memory(std::size_t number_of_triangles, const std::array<std::size_t, 3>& candidates,
-                    const std::array<std::size_t, 3>& binned, std::size_t mask_bytes, std::size_t max_memory_bytes,
-                    std::size_t reserved_bytes)
+                    const std::array<std::size_t, 3>& binned, std::size_t max_memory_bytes, std::size_t reserved_bytes)
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
     // Doubles: the sum must not wrap around.
-    double bytes = double(m_lattice.total_number_of_points()) * double(mask_bytes) + double(reserved_bytes) +
+    double bytes = double(reserved_bytes) +
                    double(number_of_triangles) * double(sizeof(internal::Lattice_triangle) + 3 * sizeof(Line_block));
     double largest_axis = 0;
     for(int axis = 0; axis < 3; ++axis)
     {
       const double lines = double(n[internal::line_u_axis(axis)]) * double(n[internal::line_v_axis(axis)]);
-      bytes += 8.0 * (lines + 1); // the line offsets stay
+      (void)lines;
+      // The rows, and at most one stored line (and, along x, start mask) per candidate crossing.
+      bytes += 8.0 * double(n[internal::line_v_axis(axis)] + 1) +
+               double(candidates[axis]) * double(sizeof(Line_entry) + (axis == 0 ? 8 : 0));
+      // The offsets are 32-bit: an upper bound of the crossings must fit.
+      if(double(candidates[axis]) >= double(std::numeric_limits<Line_offset>::max()))
+        throw Lattice_too_large_error("the lattice would hold more than 2^32 crossings along " +
+                                      std::string(1, char('x' + axis)) + ": use a larger spacing");
       bytes += double(candidates[axis]) * double(sizeof(Crossing)); // at most that many crossings stay
       // Transient, one axis at a time: row buffers and bins.
       largest_axis = (std::max)(largest_axis, double(candidates[axis]) * double(sizeof(Row_crossing)) +
@@ -522,6 +663,48 @@ private:
     }
   }
 
+  // An interval [lo, hi] along u that contains the projection of `t` on the
+  // row of lines at v = `pv`: the extent computed in double, widened by a
+  // bound of its rounding error (a few ulps of the triangle's coordinates);
+  // false if the row misses the triangle.
+  static bool scan_extent(const internal::Lattice_triangle& t, int u, int v, double pv, double& lo, double& hi)
+  {
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    double magnitude = std::abs(pv);
+    for(int e = 0; e < 3; ++e)
+      magnitude = (std::max)({magnitude, std::abs(t.p[e][u]), std::abs(t.p[e][v])});
+    // x = a_u + (pv - a_v) (b_u - a_u) / (b_v - a_v): each operation is off by
+    // at most half an ulp of a value bounded by 2 * magnitude.
+    const double error = 64 * std::numeric_limits<double>::epsilon() * magnitude +
+                         std::numeric_limits<double>::denorm_min();
+    for(int e = 0; e < 3; ++e)
+    {
+      const std::array<double, 3>& a = t.p[e];
+      const std::array<double, 3>& b = t.p[(e + 1) % 3];
+      if((a[v] - pv) * (b[v] - pv) > 0)
+        continue; // the edge is on one side of the row
+      if(a[v] == b[v])
+      {
+        lo = (std::min)({lo, a[u], b[u]});
+        hi = (std::max)({hi, a[u], b[u]});
+        continue;
+      }
+      const double x = a[u] + (pv - a[v]) * (b[u] - a[u]) / (b[v] - a[v]);
+      lo = (std::min)(lo, x);
+      hi = (std::max)(hi, x);
+    }
+    lo -= error;
+    hi += error;
+    if(!(std::isfinite(lo) && std::isfinite(hi)))
+    {
+      // Overflow far from the lattice: scan the whole block.
+      lo = -std::numeric_limits<double>::infinity();
+      hi = std::numeric_limits<double>::infinity();
+    }
+    return lo <= hi;
+  }
+
   // Sorts the crossings of a row by (u, index, position, mesh): a counting
   // sort on u (there are few crossings per line), then an insertion sort of
   // each line.
@@ -529,7 +712,9 @@ private:
   {
     if(row.size() < 2)
       return;
-    if(row.size() < 32)
+    // The counting sort costs O(nu): only where the row is dense in u (a
+    // sparse row of a fine lattice would pay for the whole cross-section).
+    if(row.size() < 32 || 4 * row.size() < nu)
     {
       std::sort(row.begin(), row.end());
       return;
@@ -555,10 +740,10 @@ private:
     row.swap(sorted);
   }
 
-  template <typename ConcurrencyTag, typename Mask>
+  template <typename ConcurrencyTag>
   void process_axis(int axis, const std::vector<internal::Lattice_triangle>& triangles,
                     const std::vector<Line_block>& blocks, const std::array<std::vector<double>, 3>& coordinates,
-                    Mask_vector<Mask>& masks, const internal::Progress& progress)
+                    const internal::Progress& progress)
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
     const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
@@ -583,7 +768,8 @@ private:
     }
 
     std::vector<std::vector<Row_crossing>> rows(nv);
-    const std::array<std::size_t, 3> stride{{1, n[0], n[0] * n[1]}};
+    // Per row, along x: the start masks of its lines, (u, mask), increasing u, non-zero.
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint64_t>>> starts(axis == 0 ? nv : 0);
     internal::concurrent_for<ConcurrencyTag>(
         nv,
         [&](std::size_t r) {
@@ -594,7 +780,18 @@ private:
           {
             const internal::Lattice_triangle& t = triangles[row_triangles[e]];
             const Line_block& b = blocks[row_triangles[e]];
-            for(std::uint32_t ju = b.u0; ju < b.u1; ++ju)
+            // Only the lines within the triangle's extent on this row (up to
+            // the rounding of that extent) can cross it; the exact test below
+            // decides.  For a sliver across many cells: its area, not its box.
+            double lo, hi;
+            if(!scan_extent(t, u, v, p[v], lo, hi))
+              continue;
+            auto first_not_below = [&](double value) {
+              return std::uint32_t(internal::first_index_not_below(coordinates[u].data(), nu, m_lattice.spacing(), value));
+            };
+            const std::uint32_t first = (std::max)(b.u0, first_not_below(lo));
+            const std::uint32_t last = (std::min)(b.u1, first_not_below(hi) + 1);
+            for(std::uint32_t ju = first; ju < last; ++ju)
             {
               p[u] = coordinates[u][ju];
               if(!internal::line_crosses_triangle(t, axis, p[u], p[v]))
@@ -613,23 +810,18 @@ private:
           if(axis == 0)
           {
             // Classification: the parity of the crossings before each point.
-            // The mask is constant between crossing indices, so each line is
-            // written once, run by run (the array is not initialized).
-            std::size_t i = 0;
-            for(std::size_t ju = 0; ju < nu; ++ju)
-            {
-              Mask* line = masks.data() + ju * stride[1] + r * stride[2];
-              Mask current = 0;
-              std::size_t written = 0;
-              for(; i < out.size() && out[i].u == ju; ++i)
+            // The crossings before the first point give the line's start
+            // mask; the others stay and define the rest of the line.
+            for(const Row_crossing& c : out)
+              if(c.index == 0)
               {
-                std::fill(line + written, line + out[i].index, current);
-                written = out[i].index;
-                current ^= Mask(Mask(1) << out[i].mesh);
+                if(starts[r].empty() || starts[r].back().first != c.u)
+                  starts[r].emplace_back(c.u, 0);
+                starts[r].back().second ^= std::uint64_t(1) << c.mesh;
               }
-              std::fill(line + written, line + na, current);
-            }
-            // Crossings before the first point only toggled the classification.
+            starts[r].erase(std::remove_if(starts[r].begin(), starts[r].end(),
+                                           [](const std::pair<std::uint32_t, std::uint64_t>& s) { return s.second == 0; }),
+                            starts[r].end());
             out.erase(std::remove_if(out.begin(), out.end(), [](const Row_crossing& c) { return c.index == 0; }),
                       out.end());
           }
@@ -644,36 +836,76 @@ private:
         },
         progress.part(0, 0.95));
 
-    // Gather the rows into one array, line by line (line = ju + nu * r: the
-    // rows are consecutive blocks of lines, already sorted).
-    std::vector<std::size_t>& line_begin = m_line_begin[axis];
-    line_begin.assign(nu * nv + 1, 0);
-    std::vector<std::size_t> row_offset(nv + 1, 0);
+    // Gather the rows into one array, line by line: the stored lines of a
+    // row are the distinct u of its crossings (and, along x, of its start
+    // masks), already sorted.
+    auto for_each_line = [&](std::size_t r, const auto& f) { // f(u, first crossing, end, start mask)
+      const std::vector<Row_crossing>& row = rows[r];
+      const std::pair<std::uint32_t, std::uint64_t>* s = axis == 0 ? starts[r].data() : nullptr;
+      const std::pair<std::uint32_t, std::uint64_t>* s_end = axis == 0 ? s + starts[r].size() : nullptr;
+      std::size_t c = 0;
+      while(c < row.size() || s != s_end)
+      {
+        std::uint32_t line_u = std::numeric_limits<std::uint32_t>::max();
+        if(c < row.size()) line_u = row[c].u;
+        if(s != s_end) line_u = (std::min)(line_u, s->first);
+        std::uint64_t mask = 0;
+        if(s != s_end && s->first == line_u)
+          mask = (s++)->second;
+        const std::size_t first = c;
+        while(c < row.size() && row[c].u == line_u)
+          ++c;
+        f(line_u, first, c, mask);
+      }
+    };
+    std::vector<std::size_t> row_offset(nv + 1, 0), line_offset(nv + 1, 0);
+    internal::concurrent_for<ConcurrencyTag>(nv, [&](std::size_t r) {
+      std::size_t lines = 0;
+      for_each_line(r, [&](std::uint32_t, std::size_t, std::size_t, std::uint64_t) { ++lines; });
+      line_offset[r + 1] = lines;
+      row_offset[r + 1] = rows[r].size();
+    });
     for(std::size_t r = 0; r < nv; ++r)
-      row_offset[r + 1] = row_offset[r] + rows[r].size();
+    {
+      row_offset[r + 1] += row_offset[r];
+      line_offset[r + 1] += line_offset[r];
+    }
     std::vector<Crossing>& crossings = m_crossings[axis];
     crossings.resize(row_offset[nv]);
+    std::vector<Line_entry>& lines = m_lines[axis];
+    lines.resize(line_offset[nv] + 1);
+    lines.back() = Line_entry{0, Line_offset(crossings.size())};
+    if(axis == 0)
+      m_start_masks.resize(line_offset[nv]);
+    m_row_begin[axis] = line_offset;
     internal::concurrent_for<ConcurrencyTag>(nv, [&](std::size_t r) {
-      std::size_t out = row_offset[r];
+      std::size_t out = row_offset[r], entry = line_offset[r];
+      for_each_line(r, [&](std::uint32_t line_u, std::size_t first, std::size_t last, std::uint64_t mask) {
+        lines[entry] = Line_entry{line_u, Line_offset(row_offset[r] + first)};
+        if(axis == 0)
+          m_start_masks[entry] = mask;
+        ++entry;
+        (void)last;
+      });
       for(const Row_crossing& c : rows[r])
       {
-        crossings[out++] = Crossing{c.position, c.index, c.mesh, c.triangle};
-        ++line_begin[c.u + nu * r + 1];
+        Crossing& stored = crossings[out++];
+        stored.position = c.position;
+        stored.index = c.index;
+        stored.mesh = c.mesh;
+        stored.triangle = c.triangle;
       }
       std::vector<Row_crossing>().swap(rows[r]);
     });
-    for(std::size_t l = 0; l < nu * nv; ++l)
-      line_begin[l + 1] += line_begin[l];
     progress.report(1.0);
   }
 
   Regular_lattice_3 m_lattice;
   std::size_t m_number_of_meshes = 0;
-  Mask_vector<std::uint8_t> m_masks8;
-  Mask_vector<std::uint16_t> m_masks16;
-  Mask_vector<std::uint32_t> m_masks32;
-  Mask_vector<std::uint64_t> m_masks64;
-  std::array<std::vector<std::size_t>, 3> m_line_begin;
+  // Per axis: the stored lines of row v are m_lines[m_row_begin[v] .. m_row_begin[v + 1]).
+  std::array<std::vector<std::size_t>, 3> m_row_begin;
+  std::array<std::vector<Line_entry>, 3> m_lines;
+  std::vector<std::uint64_t> m_start_masks; // per stored x line
   std::array<std::vector<Crossing>, 3> m_crossings;
   std::array<double, 3> m_seconds{{0, 0, 0}};
   std::size_t m_estimated_bytes = 0;

@@ -32,10 +32,6 @@ struct Marching_cubes_csg_statistics : Algorithm_statistics
   std::size_t lattice_points = 0;
   /// Crossings of the meshes with lattice edges (all axes).
   std::size_t crossings = 0;
-  /// \deprecated the same as `number_of_vertices`.
-  std::size_t output_vertices = 0;
-  /// \deprecated the same as `number_of_faces`.
-  std::size_t output_triangles = 0;
   /// Lattice points on the boundary of the lattice that are inside the
   /// result.  When it is 0 the output is closed; otherwise the output is
   /// open where the result meets the lattice boundary (or empty, if every

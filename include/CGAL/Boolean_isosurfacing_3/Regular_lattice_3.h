@@ -61,10 +61,12 @@ inline std::string to_string_precise(double x)
 class Regular_lattice_3
 {
 public:
-  /// The largest number of points a lattice may have (2^31): indices along
-  /// a line and vertex indices then fit in 32 bits, and the per-point state
-  /// arrays of the algorithms stay addressable on every platform.
-  static constexpr std::size_t max_number_of_points = std::size_t(1) << 31;
+  /// The largest number of points a lattice may have (2^62), so that
+  /// `linear_index()` never overflows.  The lattice itself stores nothing per
+  /// point; each algorithm checks what it needs (`Lattice_classifier_3`
+  /// stores the crossings, not the points, and estimates its memory before
+  /// allocating).
+  static constexpr std::size_t max_number_of_points = std::size_t(1) << 62;
 
   /// The default offset of `enclosing()`, in cells: (3 - sqrt 5) / 2, the
   /// golden section.  Without it the lattice planes would pass through the
@@ -314,7 +316,7 @@ private:
     std::ostringstream out;
     out.precision(3);
     out << "the lattice" << context << " would have " << points << " points; at most "
-        << max_number_of_points << " (2^31) are supported: use a larger spacing";
+        << max_number_of_points << " (2^62) are supported: use a larger spacing";
     throw Lattice_too_large_error(out.str());
   }
 

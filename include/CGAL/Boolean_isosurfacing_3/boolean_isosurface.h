@@ -137,7 +137,6 @@ extract_boolean_isosurface(const Tetrahedral_grid_3<GeomTraits>& grid, const Sca
   stats.number_of_vertices = out.points.size();
   stats.number_of_faces = out.polygons.size();
   stats.seconds = internal::seconds_since(total_start);
-  stats.set_deprecated_names();
   progress.report(1.0);
   return stats;
 }
@@ -260,7 +259,6 @@ extract_boolean_isosurface(const Tetrahedral_mesh_3<GeomTraits>& mesh, const Sca
   stats.number_of_vertices = out.points.size();
   stats.number_of_faces = out.polygons.size();
   stats.seconds = internal::seconds_since(total_start);
-  stats.set_deprecated_names();
   progress.report(1.0);
   return stats;
 }

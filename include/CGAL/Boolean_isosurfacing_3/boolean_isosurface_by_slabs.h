@@ -103,8 +103,6 @@ struct Boolean_isosurface_slab_statistics : Boolean_isosurface_statistics
   std::size_t number_of_slabs = 0;
   /// Time spent reading field values (the reading stage, all slabs).
   double seconds_reading = 0;
-  /// \deprecated the same as `seconds_reading`.
-  double reading_seconds = 0;
   /// Largest number of field values held at once (the buffers of all slab slots).
   /// `seconds_extraction` is the wall time of the whole pipeline here.
   std::size_t peak_field_values = 0;
@@ -253,8 +251,6 @@ extract_boolean_isosurface_by_slabs(const Tetrahedral_grid_3<GeomTraits>& grid, 
   stats.seconds_extraction = internal::seconds_since(start);
   stats.number_of_vertices = next_index;
   stats.seconds = internal::seconds_since(total_start);
-  stats.reading_seconds = stats.seconds_reading;
-  stats.set_deprecated_names();
   return stats;
 }
 

@@ -77,13 +77,13 @@ namespace Boolean_isosurfacing {
 class Empty_contour_error : public std::runtime_error
 {
 public:
-  explicit Empty_contour_error(const Contouring_report& report)
+  explicit Empty_contour_error(const Contouring_statistics& report)
     : std::runtime_error(message(report)), m_report(report)
   {}
-  const Contouring_report& report() const { return m_report; }
+  const Contouring_statistics& report() const { return m_report; }
 
 private:
-  static std::string message(const Contouring_report& report)
+  static std::string message(const Contouring_statistics& report)
   {
     return "the contour is empty: f changes sign in no usable lattice cube (cell " + std::to_string(report.cell_size) +
            ", " + std::to_string(report.visited_cubes) + " cubes visited, " + std::to_string(report.skipped_cubes) +
@@ -91,7 +91,7 @@ private:
            " for a jump of f, " + std::to_string(report.removed_closed_components) +
            " closed pieces smaller than rho removed)";
   }
-  Contouring_report m_report;
+  Contouring_statistics m_report;
 };
 
 /*!
@@ -217,25 +217,6 @@ Contouring_statistics contour_signed_distance(const Regular_lattice_3& lattice, 
 
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
- * \deprecated The former shape, the lattice from the named parameters: the
- * contouring on `contouring_lattice(field, np)` (without its limit of 2^31
- * lattice points: the traversal is sparse).  The outputs are cleared first.
- */
-template <typename ContouringField_3, typename PointOutRange, typename TriangleRange,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<!std::is_same<ContouringField_3, Regular_lattice_3>::value>>
-Contouring_statistics contour_signed_distance(const ContouringField_3& field, PointOutRange& out_points,
-                                              TriangleRange& out_triangles,
-                                              const NamedParameters& np = parameters::default_values())
-{
-  out_points.clear();
-  out_triangles.clear();
-  return internal::contour_on_lattice(internal::default_contouring_lattice(field, np), field, out_points,
-                                      out_triangles, np);
-}
-
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
  * Points (+ optional normals) to an outward-oriented triangle soup:
  * `Tangent_plane_signed_distance_3` then `contour_signed_distance()`.
  *
@@ -314,27 +295,6 @@ Contouring_statistics contour_point_set(const Regular_lattice_3& lattice, const 
   const Tangent_plane_signed_distance_3<Geom_traits> field(points, np);
   const Contouring_statistics report =
       contour_signed_distance<ConcurrencyTag>(lattice, field, out_points, out_triangles, np);
-  if(report.empty_output)
-    throw Empty_contour_error(report);
-  return report;
-}
-
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
- * \deprecated The former shape, the lattice from the named parameters
- * (`contouring_lattice()` of the samples' field).  The outputs are cleared first.
- */
-template <typename PointRange, typename PointOutRange, typename TriangleRange,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value &&
-                                      !std::is_same<PointRange, Regular_lattice_3>::value>>
-Contouring_statistics contour_point_set(const PointRange& points, PointOutRange& out_points,
-                                        TriangleRange& out_triangles,
-                                        const NamedParameters& np = parameters::default_values())
-{
-  typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
-  const Tangent_plane_signed_distance_3<Geom_traits> field(points, np);
-  const Contouring_statistics report = contour_signed_distance(field, out_points, out_triangles, np);
   if(report.empty_output)
     throw Empty_contour_error(report);
   return report;
@@ -423,25 +383,6 @@ Contouring_statistics contour_point_set(const Regular_lattice_3& lattice, const 
   std::vector<std::array<std::size_t, 3>> soup_triangles;
   const Contouring_statistics report =
       contour_point_set<ConcurrencyTag>(lattice, points, soup_points, soup_triangles, np);
-  internal::contour_soup_to_mesh(soup_points, soup_triangles, mesh);
-  return report;
-}
-
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
- * \deprecated The former shape, the lattice from the named parameters.  The mesh is cleared first.
- */
-template <typename PointRange, typename PolygonMesh,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<internal::Is_named_function_parameters<NamedParameters>::value &&
-                                      !std::is_same<PointRange, Regular_lattice_3>::value>>
-Contouring_statistics contour_point_set(const PointRange& points, PolygonMesh& mesh,
-                                        const NamedParameters& np = parameters::default_values())
-{
-  typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
-  std::vector<typename Geom_traits::Point_3> soup_points;
-  std::vector<std::array<std::size_t, 3>> soup_triangles;
-  const Contouring_statistics report = contour_point_set(points, soup_points, soup_triangles, np);
   internal::contour_soup_to_mesh(soup_points, soup_triangles, mesh);
   return report;
 }

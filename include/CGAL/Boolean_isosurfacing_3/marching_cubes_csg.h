@@ -24,6 +24,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -62,7 +63,8 @@ namespace Boolean_isosurfacing {
  *
  * \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (TBB)
  * \tparam TriangleMeshRange a range of `FaceListGraph`s with triangle faces
- *         (or `std::reference_wrapper`s to them), as for `Lattice_classifier_3`
+ *         (or `std::reference_wrapper`s to them), or of `Triangle_soup_3`s,
+ *         as for `Lattice_classifier_3`
  * \tparam PointRange a container with `push_back()` of points constructible
  *         from three doubles (or a `std::array<double, 3>`)
  * \tparam TriangleRange a container with `push_back()` of `std::array<I, 3>`
@@ -135,24 +137,37 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
 {
   typedef typename PointRange::value_type Point;
   typedef typename TriangleRange::value_type Triangle;
-  internal::Csg_soup soup;
   const auto start = std::chrono::steady_clock::now();
-  Marching_cubes_csg_statistics statistics =
-      internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, soup, np);
-  points.clear();
-  triangles.clear();
-  for(const std::array<double, 3>& p : soup.points)
-    points.push_back(internal::make_output_point<Point>(p));
-  std::vector<std::array<double, 3>>().swap(soup.points);
-  for(const std::array<std::size_t, 3>& t : soup.triangles)
-    triangles.push_back(internal::make_output_triangle<Triangle>(t));
+  internal::Csg_features features;
+  Marching_cubes_csg_statistics statistics;
+  if constexpr(std::is_same<PointRange, std::vector<std::array<double, 3>>>::value &&
+               internal::Is_index_triple_vector<TriangleRange>::value)
+  {
+    // The package's own soup types: written in place, no copy.
+    statistics = internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, points, triangles,
+                                                                  features, np);
+  }
+  else
+  {
+    std::vector<std::array<double, 3>> soup_points;
+    std::vector<std::array<std::size_t, 3>> soup_triangles;
+    statistics = internal::marching_cubes_csg_soup<ConcurrencyTag>(meshes, expression, lattice, soup_points,
+                                                                  soup_triangles, features, np);
+    points.clear();
+    triangles.clear();
+    for(const std::array<double, 3>& p : soup_points)
+      points.push_back(internal::make_output_point<Point>(p));
+    std::vector<std::array<double, 3>>().swap(soup_points);
+    for(const std::array<std::size_t, 3>& t : soup_triangles)
+      triangles.push_back(internal::make_output_triangle<Triangle>(t));
+  }
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sharp_feature_output_t>::value)
   {
-    Marching_cubes_csg_features* features = parameters::get_parameter(np, internal_np::sharp_feature_output);
-    if(features != nullptr)
+    Marching_cubes_csg_features* output = parameters::get_parameter(np, internal_np::sharp_feature_output);
+    if(output != nullptr)
     {
-      features->crease_edges = soup.crease_edges;
-      features->corner_vertices = soup.corner_vertices;
+      output->crease_edges = std::move(features.crease_edges);
+      output->corner_vertices = std::move(features.corner_vertices);
     }
   }
   statistics.seconds_triangulation += internal::seconds_since(start) - statistics.seconds_classification -
@@ -253,39 +268,6 @@ Marching_cubes_csg_statistics marching_cubes_csg(const Regular_lattice_3& lattic
                                       statistics.seconds_edges - statistics.seconds_triangulation;
   statistics.seconds = internal::seconds_since(start);
   return statistics;
-}
-
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
- * \deprecated The former argument order: calls
- * `marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, points, triangles, np)`,
- * whose outputs are cleared first.
- */
-template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange, typename PointRange,
-          typename TriangleRange, typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<!internal::Is_named_function_parameters<TriangleRange>::value>>
-Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes, const Boolean_expression& expression,
-                                                 const Regular_lattice_3& lattice, PointRange& points,
-                                                 TriangleRange& triangles,
-                                                 const NamedParameters& np = parameters::default_values())
-{
-  return marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, points, triangles, np);
-}
-
-/*!
- * \ingroup PkgBooleanIsosurfacing3Ref
- * \deprecated The former argument order: calls
- * `marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, output, np)`,
- * whose output is cleared first.
- */
-template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange, typename MutableFaceGraph,
-          typename NamedParameters = CGAL::parameters::Default_named_parameters,
-          typename = std::enable_if_t<internal::Is_named_function_parameters<NamedParameters>::value>>
-Marching_cubes_csg_statistics marching_cubes_csg(const TriangleMeshRange& meshes, const Boolean_expression& expression,
-                                                 const Regular_lattice_3& lattice, MutableFaceGraph& output,
-                                                 const NamedParameters& np = parameters::default_values())
-{
-  return marching_cubes_csg<ConcurrencyTag>(lattice, meshes, expression, output, np);
 }
 
 } // namespace Boolean_isosurfacing

@@ -108,9 +108,9 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  * the output of `marching_cubes_csg()` with `sharp_features(false)`
  * (sharp features are not available on slab ranges).
  *
+ * \param lattice the whole lattice
  * \param meshes the closed triangle meshes (the same for every range)
  * \param expression a Boolean expression with `meshes.size()` variables
- * \param lattice the whole lattice
  * \param first_layer, last_layer the cube layers of the range
  * \param range the output (overwritten)
  * \param np an optional sequence of named parameters among the ones listed below
@@ -132,8 +132,8 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
-void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolean_expression& expression,
-                                   const Regular_lattice_3& lattice, std::size_t first_layer, std::size_t last_layer,
+void marching_cubes_csg_slab_range(const Regular_lattice_3& lattice, const TriangleMeshRange& meshes,
+                                   const Boolean_expression& expression, std::size_t first_layer, std::size_t last_layer,
                                    Marching_cubes_csg_slab_range& range,
                                    const NamedParameters& np = parameters::default_values())
 {
@@ -177,9 +177,7 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   const std::size_t max_memory = choose_parameter(get_parameter(np, internal_np::max_memory_bytes),
                                                   Lattice_classifier_3::default_max_memory_bytes);
   typedef internal::Marching_cubes_csg_builder<ConcurrencyTag> Builder;
-  const std::size_t plane = sub.number_of_points(0) * sub.number_of_points(1);
-  const std::size_t reserved =
-      sub.total_number_of_points() * Builder::bytes_per_point() + plane * Builder::bytes_per_plane_point();
+  const std::size_t reserved = sub.number_of_points(2) * Builder::bytes_per_plane();
   const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
       std::move(triangles), number_of_meshes, sub, max_memory, reserved, internal::Progress());
   internal::Marching_cubes_csg::Feature_settings plain;
@@ -195,36 +193,17 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   builder.compute_vertices(range.points, internal::Progress());
   range.statistics.seconds_edges = internal::seconds_since(start);
   start = std::chrono::steady_clock::now();
-  std::vector<std::array<std::size_t, 2>> no_creases;
-  std::vector<std::size_t> no_corners;
-  builder.compute_triangles(range.points, range.triangles, no_creases, no_corners, range.statistics,
-                            internal::Progress());
+  builder.compute_plain_triangles(range.triangles, internal::Progress());
   range.statistics.seconds_triangulation = internal::seconds_since(start);
 
-  // The boundary planes' vertex edges, from the states (the expression of
-  // the masks), in the builder's order: j, then i, then axis.
-  const internal::Expression_evaluator inside(expression);
-  const std::size_t nx = sub.number_of_points(0), ny = sub.number_of_points(1), top = sub.number_of_points(2) - 1;
-  auto state = [&](std::size_t i, std::size_t j, std::size_t k) { return inside(classifier.mask(i, j, k)); };
-  auto plane_edges = [&](std::size_t k, bool with_z, std::vector<std::uint64_t>& out) {
-    for(std::size_t j = 0; j < ny; ++j)
-      for(std::size_t i = 0; i < nx; ++i)
-      {
-        const bool s = state(i, j, k);
-        const std::uint64_t id = 3 * std::uint64_t(i + nx * j);
-        if(i + 1 < nx && s != state(i + 1, j, k))
-          out.push_back(id);
-        if(j + 1 < ny && s != state(i, j + 1, k))
-          out.push_back(id + 1);
-        if(with_z && s != state(i, j, k + 1))
-          out.push_back(id + 2);
-      }
-  };
+  // The boundary planes' vertex edges, in the builder's order: j, then i,
+  // then axis (the top plane of the sub-lattice has no z edges).
+  const std::size_t top = sub.number_of_points(2) - 1;
   if(first_layer > 0)
-    plane_edges(0, true, range.bottom_edges);
+    builder.plane_vertex_edges(0, range.bottom_edges);
   if(last_layer < nz - 1)
   {
-    plane_edges(top, false, range.top_edges);
+    builder.plane_vertex_edges(top, range.top_edges);
     // The top plane's vertices are the builder's last ones: move them out.
     const std::size_t owned = range.points.size() - range.top_edges.size();
     range.top_points.assign(range.points.begin() + std::ptrdiff_t(owned), range.points.end());
@@ -232,8 +211,6 @@ void marching_cubes_csg_slab_range(const TriangleMeshRange& meshes, const Boolea
   }
   range.statistics.number_of_vertices = range.points.size();
   range.statistics.number_of_faces = range.triangles.size();
-  range.statistics.output_vertices = range.statistics.number_of_vertices; // the deprecated names
-  range.statistics.output_triangles = range.statistics.number_of_faces;
 }
 
 } // namespace Boolean_isosurfacing

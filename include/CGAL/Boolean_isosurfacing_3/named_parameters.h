@@ -23,7 +23,7 @@
 #define CGAL_BOOLEAN_ISOSURFACING_NAMED_PARAMETERS(X) \
   X(signed_volume_t, signed_volume)                   \
   X(check_self_intersections_t, check_self_intersections) \
-  X(progress_t, progress)                             \
+  X(check_closedness_t, check_closedness)             \
   X(max_memory_bytes_t, max_memory_bytes)             \
   X(sampling_density_t, sampling_density)             \
   X(noise_level_t, noise_level)                       \

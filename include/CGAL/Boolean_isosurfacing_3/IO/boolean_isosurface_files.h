@@ -128,6 +128,7 @@ std::array<double, 3> coordinates(const Point_3& p)
 {
   return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
 }
+inline std::array<double, 3> coordinates(const std::array<double, 3>& p) { return p; }
 
 inline void check_point_index(std::size_t index, std::size_t number_of_points, const char* what, std::size_t which)
 {

@@ -26,14 +26,19 @@ namespace IO {
  * vertices are allowed (the soup has no connectivity to break); see
  * `read_closed_triangle_mesh()` for a `FaceGraph`.
  *
- * \returns the soup, in flat arrays, without building any mesh.
+ * \returns the soup, in flat arrays, without building any mesh; if
+ *   `signed_volume` is not null, it receives the soup's signed volume (the
+ *   check computes it: negative for an inward soup).
  * \throws Invalid_input_error (or a derived type) whose message states the
  *   problem in one line, without the file name.
  */
-inline Triangle_soup_3 read_closed_triangle_soup(const std::string& path, bool allow_inward = false)
+inline Triangle_soup_3 read_closed_triangle_soup(const std::string& path, bool allow_inward = false,
+                                                 double* signed_volume = nullptr)
 {
   Triangle_soup_3 soup = read_triangle_soup(path);
   const double volume = surveyor_volume(soup, parameters::signed_volume(allow_inward));
+  if(signed_volume != nullptr)
+    *signed_volume = volume;
   // A closed soup of fewer than 4 triangles is a doubly covered triangle (the
   // edge check cannot tell it from a solid), and an outward soup of volume 0
   // (certified: exactly 0) is flat: neither bounds a solid.

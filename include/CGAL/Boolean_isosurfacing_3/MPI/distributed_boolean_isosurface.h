@@ -16,6 +16,7 @@
 //   process (`tbiso --out-of-core`).
 // This header needs <mpi.h>; the core headers never do.
 
+#include <CGAL/Boolean_isosurfacing_3/Algorithm_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/Boolean_isosurface_PLY_stream.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/scalar_fields.h>
 #include <CGAL/Boolean_isosurfacing_3/MPI/internal/Mpi_support.h>
@@ -120,24 +121,29 @@ private:
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// What `extract_boolean_isosurface_distributed()` did: global counts (the
-/// same on every rank) and this rank's share.
-struct Boolean_isosurface_distributed_statistics
+/// same on every rank) and this rank's share and times.
+/// `number_of_vertices`, `number_of_faces` (polygons, all ranks), `seconds`
+/// (this rank's whole call) and `warnings` are those of `Algorithm_statistics`.
+struct Boolean_isosurface_distributed_statistics : Algorithm_statistics
 {
-  std::size_t number_of_vertices = 0, number_of_polygons = 0, number_of_evaluated_tetrahedra = 0;
+  /// Tetrahedra that needed more than the sign test, all ranks.
+  std::size_t number_of_evaluated_tetrahedra = 0;
   /// This rank's cube layers `[first_layer, last_layer)`.
   std::size_t first_layer = 0, last_layer = 0;
-  std::size_t rank_vertices = 0, rank_polygons = 0;
+  /// The vertices this rank owns (writes) and its polygons.
+  std::size_t rank_vertices = 0, rank_faces = 0;
   /// Words of the boundary messages this rank sent up (0 for the top rank).
   std::size_t sent_words = 0;
   /// Whether this rank extracted its range a second time, with the message
   /// from below (`Boolean_isosurface_slab_range::depends_on_below`).
   bool extracted_again = false;
+  /// Largest number of field values this rank held at once.
   std::size_t peak_field_values = 0;
   /// This rank's wall times: extraction (reading included), welding
   /// (exchange and prefix sums), writing.
-  double extraction_seconds = 0, welding_seconds = 0, writing_seconds = 0;
-  /// The largest extraction time over the ranks (the critical path).
-  double max_extraction_seconds = 0;
+  double seconds_extraction = 0, seconds_welding = 0, seconds_writing = 0;
+  /// The largest `seconds_extraction` over the ranks (the critical path).
+  double max_seconds_extraction = 0;
 };
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
@@ -188,12 +194,13 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
   stats.first_layer = mine.first;
   stats.last_layer = mine.second;
 
-  auto start = std::chrono::steady_clock::now();
+  const auto call_start = std::chrono::steady_clock::now();
+  auto start = call_start;
   Boolean_isosurface_slab_range range;
   mpi::on_all_ranks(comm, [&] {
     extract_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second, range, np);
   });
-  stats.extraction_seconds = internal::seconds_since(start);
+  stats.seconds_extraction = internal::seconds_since(start);
 
   // The one neighbour exchange: top-layer keys go to the rank above, when
   // both ranges are non-empty (empty ranges are the last ranks).
@@ -229,10 +236,10 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
         extract_boolean_isosurface_slab_range<ConcurrencyTag>(grid, source, expression, mine.first, mine.second,
                                                               from_below, range, np);
     });
-    stats.extraction_seconds += internal::seconds_since(again);
+    stats.seconds_extraction += internal::seconds_since(again);
   }
   stats.extracted_again = depth[std::size_t(rank)] > 0;
-  stats.max_extraction_seconds = mpi::maximum(comm, stats.extraction_seconds);
+  stats.max_seconds_extraction = mpi::maximum(comm, stats.seconds_extraction);
   exchange_up();
   Boolean_isosurface_slab_range_welding welding;
   mpi::on_all_ranks(comm, [&] { welding = match_boolean_isosurface_slab_range(range, from_below); });
@@ -240,18 +247,18 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
   const std::uint64_t offset = mpi::exclusive_sum(comm, welding.number_of_new_vertices);
   std::vector<std::size_t> global = global_vertex_indices(range, welding, std::size_t(offset));
   stats.number_of_vertices = std::size_t(mpi::total_sum(comm, welding.number_of_new_vertices));
-  stats.number_of_polygons = std::size_t(mpi::total_sum(comm, range.number_of_polygons()));
+  stats.number_of_faces = std::size_t(mpi::total_sum(comm, range.number_of_polygons()));
   stats.number_of_evaluated_tetrahedra = std::size_t(mpi::total_sum(comm, range.number_of_evaluated_tetrahedra));
   stats.rank_vertices = welding.number_of_new_vertices;
-  stats.rank_polygons = range.number_of_polygons();
+  stats.rank_faces = range.number_of_polygons();
   stats.peak_field_values = range.peak_field_values;
-  stats.welding_seconds = internal::seconds_since(start);
+  stats.seconds_welding = internal::seconds_since(start);
 
   // The file: header (rank 0), vertex records, face records, each section
   // the ranks' parts in rank order.
   start = std::chrono::steady_clock::now();
   typedef IO::Boolean_isosurface_PLY_stream Ply;
-  const std::string header = Ply::header(stats.number_of_vertices, stats.number_of_polygons);
+  const std::string header = Ply::header(stats.number_of_vertices, stats.number_of_faces);
   std::uint64_t face_bytes = 0;
   for(std::size_t p = 0; p < range.number_of_polygons(); ++p)
     face_bytes += 1 + 4 * (range.polygon_begin[p + 1] - range.polygon_begin[p]) + 4 + 3;
@@ -287,7 +294,8 @@ extract_boolean_isosurface_distributed(MPI_Comm comm, const Tetrahedral_grid_3<G
     }
     return next_polygon < range.number_of_polygons();
   });
-  stats.writing_seconds = internal::seconds_since(start);
+  stats.seconds_writing = internal::seconds_since(start);
+  stats.seconds = internal::seconds_since(call_start);
   return stats;
 }
 

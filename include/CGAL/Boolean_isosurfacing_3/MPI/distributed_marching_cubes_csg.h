@@ -13,6 +13,7 @@
 // collectively -- byte for byte the file CGAL's `write_polygon_mesh()` writes
 // for the single-process `marching_cubes_csg()` output (precision 17).
 
+#include <CGAL/Boolean_isosurfacing_3/Algorithm_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/MPI/internal/Mpi_support.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Accurate_sum.h>
 #include <CGAL/Boolean_isosurfacing_3/boolean_isosurface_slab_range.h>
@@ -35,16 +36,25 @@ namespace Boolean_isosurfacing {
 
 /// \ingroup PkgBooleanIsosurfacing3Ref
 /// What `marching_cubes_csg_distributed()` did: global counts (the same on
-/// every rank) and this rank's share.
-struct Marching_cubes_csg_distributed_statistics
+/// every rank) and this rank's share and times.  `number_of_vertices`,
+/// `number_of_faces` (triangles, all ranks), `seconds` (this rank's whole
+/// call) and `warnings` are those of `Algorithm_statistics`.
+struct Marching_cubes_csg_distributed_statistics : Algorithm_statistics
 {
-  std::size_t number_of_vertices = 0, number_of_triangles = 0;
   /// The enclosed volume (divergence theorem about the lattice centre), summed over the ranks.
   double volume = 0;
+  /// This rank's cube layers `[first_layer, last_layer)`.
   std::size_t first_layer = 0, last_layer = 0;
-  std::size_t rank_vertices = 0, rank_triangles = 0, rank_input_triangles = 0, rank_lattice_points = 0;
+  /// This rank's share: output vertices it owns, triangles, input triangles
+  /// that reach its layers, lattice points of its layers.
+  std::size_t rank_vertices = 0, rank_faces = 0, rank_input_triangles = 0, rank_lattice_points = 0;
+  /// Words of the boundary message this rank sent down (0 for rank 0).
   std::size_t sent_words = 0;
-  double extraction_seconds = 0, welding_seconds = 0, writing_seconds = 0, max_extraction_seconds = 0;
+  /// This rank's wall times: extraction (classification and triangulation
+  /// of its layers), welding (exchange, prefix sums, volume), writing.
+  double seconds_extraction = 0, seconds_welding = 0, seconds_writing = 0;
+  /// The largest `seconds_extraction` over the ranks (the critical path).
+  double max_seconds_extraction = 0;
 };
 
 namespace internal {
@@ -68,9 +78,9 @@ inline std::ostringstream off_stream()
 /// Collective.
 ///
 /// \param comm the communicator
+/// \param lattice the whole lattice
 /// \param meshes the closed triangle meshes (the same on every rank)
 /// \param expression a Boolean expression with `meshes.size()` variables
-/// \param lattice the whole lattice
 /// \param filename the output OFF file
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
@@ -84,8 +94,8 @@ inline std::ostringstream off_stream()
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Marching_cubes_csg_distributed_statistics
-marching_cubes_csg_distributed(MPI_Comm comm, const TriangleMeshRange& meshes, const Boolean_expression& expression,
-                               const Regular_lattice_3& lattice, const std::string& filename,
+marching_cubes_csg_distributed(MPI_Comm comm, const Regular_lattice_3& lattice, const TriangleMeshRange& meshes,
+                               const Boolean_expression& expression, const std::string& filename,
                                const NamedParameters& np = parameters::default_values())
 {
   namespace mpi = internal::mpi;
@@ -99,13 +109,14 @@ marching_cubes_csg_distributed(MPI_Comm comm, const TriangleMeshRange& meshes, c
   stats.first_layer = mine.first;
   stats.last_layer = mine.second;
 
-  auto start = std::chrono::steady_clock::now();
+  const auto call_start = std::chrono::steady_clock::now();
+  auto start = call_start;
   Marching_cubes_csg_slab_range range;
   mpi::on_all_ranks(comm, [&] {
-    marching_cubes_csg_slab_range<ConcurrencyTag>(meshes, expression, lattice, mine.first, mine.second, range, np);
+    marching_cubes_csg_slab_range<ConcurrencyTag>(lattice, meshes, expression, mine.first, mine.second, range, np);
   });
-  stats.extraction_seconds = internal::seconds_since(start);
-  stats.max_extraction_seconds = mpi::maximum(comm, stats.extraction_seconds);
+  stats.seconds_extraction = internal::seconds_since(start);
+  stats.max_seconds_extraction = mpi::maximum(comm, stats.seconds_extraction);
 
   // The one neighbour exchange: plane k0's vertex edges go down.
   start = std::chrono::steady_clock::now();
@@ -126,9 +137,9 @@ marching_cubes_csg_distributed(MPI_Comm comm, const TriangleMeshRange& meshes, c
   std::vector<std::uint64_t>().swap(from_above);
   auto global = [&](std::size_t t) { return t < range.points.size() ? offset + t : top[t - range.points.size()]; };
   stats.number_of_vertices = std::size_t(mpi::total_sum(comm, range.points.size()));
-  stats.number_of_triangles = std::size_t(mpi::total_sum(comm, range.triangles.size()));
+  stats.number_of_faces = std::size_t(mpi::total_sum(comm, range.triangles.size()));
   stats.rank_vertices = range.points.size();
-  stats.rank_triangles = range.triangles.size();
+  stats.rank_faces = range.triangles.size();
   stats.rank_input_triangles = range.number_of_input_triangles;
   stats.rank_lattice_points = range.statistics.lattice_points;
 
@@ -154,7 +165,7 @@ marching_cubes_csg_distributed(MPI_Comm comm, const TriangleMeshRange& meshes, c
   }
   const double mine_volume = volume.result();
   MPI_Allreduce(&mine_volume, &stats.volume, 1, MPI_DOUBLE, MPI_SUM, comm);
-  stats.welding_seconds = internal::seconds_since(start);
+  stats.seconds_welding = internal::seconds_since(start);
 
   // The file: [header (rank 0)] [vertex lines] [facet header + ...] [face lines] [footer]
   // with the facet header and the footer on the last rank.
@@ -164,7 +175,7 @@ marching_cubes_csg_distributed(MPI_Comm comm, const TriangleMeshRange& meshes, c
     std::ostringstream out = internal::off_stream();
     CGAL::File_writer_OFF writer;
     // Every rank binds the writer to its stream; only rank 0 keeps the header.
-    writer.write_header(out, stats.number_of_vertices, 0, stats.number_of_triangles);
+    writer.write_header(out, stats.number_of_vertices, 0, stats.number_of_faces);
     if(rank == 0)
       parts[0] = out.str();
     out.str("");
@@ -190,7 +201,8 @@ marching_cubes_csg_distributed(MPI_Comm comm, const TriangleMeshRange& meshes, c
     out.swap(parts[section]);
     return false;
   });
-  stats.writing_seconds = internal::seconds_since(start);
+  stats.seconds_writing = internal::seconds_since(start);
+  stats.seconds = internal::seconds_since(call_start);
   return stats;
 }
 

@@ -54,16 +54,6 @@ public:
   explicit Progress(std::function<bool(double)> callback, double begin = 0, double end = 1)
     : m_callback(std::move(callback)), m_begin(begin), m_end(end)
   {}
-  /// A progress-only callback (the deprecated `progress` named parameter): it never cancels.
-  explicit Progress(std::function<void(double)> callback, double begin = 0, double end = 1)
-    : m_begin(begin), m_end(end)
-  {
-    if(callback)
-      m_callback = [callback](double f) {
-        callback(f);
-        return true;
-      };
-  }
 
   void report(double fraction) const
   {

@@ -16,16 +16,12 @@ namespace Boolean_isosurfacing {
 namespace internal {
 
 // The progress of a run, from CGAL's `callback` named parameter (a callable
-// `bool(double)`: false cancels), or from the package's deprecated
-// `progress` parameter (a callable `void(double)`, which never cancels).
-// `callback` wins when both are given.
+// `bool(double)`: false cancels).
 template <typename NamedParameters>
 Progress progress_of(const NamedParameters& np)
 {
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value)
     return Progress(std::function<bool(double)>(CGAL::parameters::get_parameter(np, CGAL::internal_np::callback)));
-  else if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::progress_t>::value)
-    return Progress(std::function<void(double)>(CGAL::parameters::get_parameter(np, internal_np::progress)));
   else
     return Progress();
 }

@@ -339,7 +339,7 @@ public:
       {
         const std::size_t a = vertex(t[0]), b = vertex(t[1]), d = vertex(t[2]);
         out_triangles.push_back(typename TriangleRange::value_type{a, b, d});
-        ++report.number_of_triangles;
+        ++report.number_of_faces;
       }
     }
     return next_vertex;
@@ -546,7 +546,7 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
     report.removed_closed_components =
       internal::remove_small_closed_components(out_points, out_triangles, first_vertex, first_triangle, bubble_size);
     next_vertex = out_points.size();
-    report.number_of_triangles = out_triangles.size() - first_triangle;
+    report.number_of_faces = out_triangles.size() - first_triangle;
   }
   // Membranes: with consistent values the contour closes every opening of
   // the samples; the pieces far from every sample that span a wide opening
@@ -577,7 +577,7 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
         out_points, out_triangles, first_vertex, first_triangle, field.points(),
         [&field](const auto& p) { return double(field.distance_to_samples(p)); }, reach, max_hole / 2);
       next_vertex = out_points.size();
-      report.number_of_triangles = out_triangles.size() - first_triangle;
+      report.number_of_faces = out_triangles.size() - first_triangle;
     }
   }
   // Holes: a skipped cube (undefined corner, jump of f)
@@ -595,16 +595,13 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
     report.split_vertices = repaired.first;
     report.filled_holes = repaired.second;
     next_vertex = out_points.size();
-    report.number_of_triangles = out_triangles.size() - first_triangle;
+    report.number_of_faces = out_triangles.size() - first_triangle;
   }
   report.number_of_vertices = next_vertex - first_vertex;
-  report.number_of_faces = report.number_of_triangles;
-  report.empty_output = report.number_of_triangles == 0;
+  report.empty_output = report.number_of_faces == 0;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - total_start).count();
   report.seconds_field = field_seconds;
   report.seconds_contouring = report.seconds - field_seconds;
-  report.field_seconds = report.seconds_field;
-  report.contouring_seconds = report.seconds_contouring;
   add_contouring_warnings(report);
   progress.report(1.0);
   return report;}

@@ -16,7 +16,6 @@
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Csg_edge_point.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Collapse_short_edges.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Resolution_check.h>
@@ -38,6 +37,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -52,6 +53,13 @@ template <typename T>
 struct Is_std_array : std::false_type {};
 template <typename T, std::size_t N>
 struct Is_std_array<std::array<T, N>> : std::true_type {};
+
+// A std::vector of std::array<I, 3>, I an integer type: triangles the
+// builder can write in place.
+template <typename T>
+struct Is_index_triple_vector : std::false_type {};
+template <typename I>
+struct Is_index_triple_vector<std::vector<std::array<I, 3>>> : std::is_integral<I> {};
 
 template <typename Triangle>
 Triangle make_output_triangle(const std::array<std::size_t, 3>& t)
@@ -93,17 +101,25 @@ std::size_t concurrency()
   return 1;
 }
 
-// The soup, before it is appended to the caller's containers.
-struct Csg_soup
+// The crease edges (vertex pairs, smaller index first) and corner vertices
+// of a soup.
+struct Csg_features
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  // Crease edges (vertex pairs, smaller index first) and corner vertices.
   std::vector<std::array<std::size_t, 2>> crease_edges;
   std::vector<std::size_t> corner_vertices;
 };
 
 // The phases after the classification: output states, vertices, cubes.
+//
+// The output states are stored sparsely, per x row of lattice points: the
+// state of its first point and the sorted list of the row's *vertex edges*,
+// coded 3 * i + axis: its x edge (i, i + 1), and the y edge to the next row
+// and the z edge to the next plane at point i, whose ends have different
+// states.  These lists hold one entry per output vertex, in vertex order.
+// Only the rows whose x line the classifier stores (it holds crossings or
+// starts inside a mesh) can differ from the state of the empty mask, and
+// only the rows with a vertex edge are listed, so memory and work grow with
+// the surface, not with the lattice nor its cross-sections.
 template <typename ConcurrencyTag>
 class Marching_cubes_csg_builder
 {
@@ -117,62 +133,30 @@ public:
   Marching_cubes_csg_builder(const Lattice_classifier_3& classifier, const Boolean_expression& expression,
                              const Feature_settings& features, const std::vector<Triangle_tangent>& tangents)
     : m_classifier(classifier), m_lattice(classifier.lattice()), m_inside(expression),
-      m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents)
+      m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents), m_empty_state(m_inside(0))
   {}
 
-  // Bytes per lattice point and per xy-plane that the builder allocates on
-  // top of the classifier.
-  static std::size_t bytes_per_point() { return 1; }
-  static std::size_t bytes_per_plane_point() { return 2 * 3 * sizeof(std::uint32_t) * concurrency<ConcurrencyTag>() + 1; }
+  // Bytes per lattice plane and per output vertex that the builder
+  // allocates on top of the classifier (for its memory estimate).
+  static std::size_t bytes_per_plane() { return 2 * sizeof(Plane_rows); }
+  static std::size_t bytes_per_vertex() { return 4 * sizeof(std::uint32_t); }
 
+  // The vertex edge lists of every row; returns the number of lattice
+  // boundary points inside the result.
   std::size_t compute_states(const Progress& progress)
   {
-    const std::size_t nx = m_n[0], ny = m_n[1];
-    m_state.clear();
-    m_state.resize(m_lattice.total_number_of_points()); // written below, in parallel
-    m_row_kind.assign(ny * m_n[2], MIXED_ROW);
-    m_classifier.visit_masks([&](const auto* masks) {
-      concurrent_for<ConcurrencyTag>(
-          m_n[2],
-          [&](std::size_t k) {
-            for(std::size_t j = 0; j < ny; ++j)
-            {
-              const std::size_t first = m_lattice.linear_index(0, j, k), last = first + nx;
-              std::uint8_t* row = m_state.data() + first;
-              if(m_classifier.crossings_on_line(0, j + ny * k).empty())
-              {
-                // No crossing on the x line: the masks, hence the states, are constant.
-                const std::uint8_t s = m_inside(std::uint64_t(masks[first])) ? 1 : 0;
-                std::fill(row, row + nx, s);
-                m_row_kind[j + ny * k] = s;
-                continue;
-              }
-              unsigned any = 0, all = 1;
-              for(std::size_t idx = first; idx < last; ++idx)
-              {
-                const unsigned s = m_inside(std::uint64_t(masks[idx])) ? 1u : 0u;
-                m_state[idx] = std::uint8_t(s);
-                any |= s;
-                all &= s;
-              }
-              m_row_kind[j + ny * k] = any == all ? std::uint8_t(all) : MIXED_ROW;
-            }
-          },
-          progress);
-    });
-    // Points on the lattice boundary: whole rows on the boundary planes,
-    // the two ends of the other rows.
-    std::size_t boundary_inside = 0;
-    for(std::size_t k = 0; k < m_n[2]; ++k)
-      for(std::size_t j = 0; j < m_n[1]; ++j)
-      {
-        const std::size_t row = m_lattice.linear_index(0, j, k);
-        if(k == 0 || j == 0 || k + 1 == m_n[2] || j + 1 == m_n[1])
-          boundary_inside += std::size_t(std::count(m_state.begin() + row, m_state.begin() + row + m_n[0], 1));
-        else
-          boundary_inside += m_state[row] + (m_n[0] > 1 ? m_state[row + m_n[0] - 1] : 0);
-      }
-    return boundary_inside;
+    const std::size_t nz = m_n[2];
+    // The x changes of every row first: the y and z edges compare two rows.
+    m_changes.assign(nz, Plane_changes());
+    concurrent_for<ConcurrencyTag>(
+        nz, [&](std::size_t k) { x_changes_of_plane(k, m_changes[k]); }, progress.part(0, 0.4));
+    m_planes.assign(nz, Plane_rows());
+    concurrent_for<ConcurrencyTag>(
+        nz, [&](std::size_t k) { vertex_edges_of_plane(k, m_planes[k]); }, progress.part(0.4, 1));
+    m_vertex_offset.assign(nz + 1, 0);
+    for(std::size_t k = 0; k < nz; ++k)
+      m_vertex_offset[k + 1] = m_vertex_offset[k] + m_planes[k].codes.size();
+    return boundary_points_inside();
   }
 
   // Vertices are numbered plane by plane (z), and in a plane by edge id
@@ -181,47 +165,43 @@ public:
   void compute_vertices(std::vector<std::array<double, 3>>& points, const Progress& progress)
   {
     const std::size_t nz = m_n[2];
-    m_vertex_offset.assign(nz + 1, 0);
-    concurrent_for<ConcurrencyTag>(nz, [&](std::size_t k) {
-      std::size_t count = 0;
-      for_each_vertex_edge(k, [&](std::size_t, std::size_t, int, std::size_t) { ++count; });
-      m_vertex_offset[k + 1] = count;
-    });
-    for(std::size_t k = 0; k < nz; ++k)
-      m_vertex_offset[k + 1] += m_vertex_offset[k];
     if(m_vertex_offset[nz] >= (std::size_t(1) << 32) && sizeof(std::size_t) < 8)
       throw Lattice_too_large_error("too many output vertices for this platform");
     points.resize(m_vertex_offset[nz]);
     if(m_features.enabled)
       m_normals.resize(points.size());
     concurrent_for<ConcurrencyTag>(
-        nz,
-        [&](std::size_t k) {
-          std::size_t id = m_vertex_offset[k];
-          for_each_vertex_edge(k, [&](std::size_t i, std::size_t j, int axis, std::size_t idx) {
-            points[id] = vertex_position(i, j, k, axis, idx, m_features.enabled ? &m_normals[id] : nullptr);
-            ++id;
-          });
-        },
-        progress);
+        nz, [&](std::size_t k) { vertices_of_plane(k, points); }, progress);
   }
 
-  // With sharp features, `points` (the edge vertices) gets the feature
+  // The edge ids 3 * (i + nx * j) + axis of the vertices of plane k, in
+  // vertex order (for the welding of slab ranges).
+  void plane_vertex_edges(std::size_t k, std::vector<std::uint64_t>& out) const
+  {
+    const Plane_rows& p = m_planes[k];
+    for(std::size_t r = 0; r < p.rows.size(); ++r)
+      for(std::size_t c = p.begin[r]; c < p.begin[r + 1]; ++c)
+        out.push_back(std::uint64_t(p.codes[c]) + 3 * std::uint64_t(m_n[0]) * p.rows[r]);
+  }
+
+  // With sharp features: `points` (the edge vertices) gets the feature
   // vertices appended, and `soup_creases`, `soup_corners` the crease edges and
   // corner vertices.
-  void compute_triangles(std::vector<std::array<double, 3>>& points,
-                         std::vector<std::array<std::size_t, 3>>& triangles,
-                         std::vector<std::array<std::size_t, 2>>& soup_creases, std::vector<std::size_t>& soup_corners,
-                         Marching_cubes_csg_statistics& statistics, const Progress& progress)
+  void compute_feature_triangles(std::vector<std::array<double, 3>>& points,
+                                 std::vector<std::array<std::size_t, 3>>& triangles,
+                                 std::vector<std::array<std::size_t, 2>>& soup_creases,
+                                 std::vector<std::size_t>& soup_corners, Marching_cubes_csg_statistics& statistics,
+                                 const Progress& progress)
   {
+    CGAL_precondition(m_features.enabled);
     if(m_n[0] < 2 || m_n[1] < 2 || m_n[2] < 2)
       return;
     const std::size_t layers = m_n[2] - 1;
-    // The chunks only change who computes what: the output is the
-    // concatenation of the layers in order, whatever the chunking.
-    const std::size_t chunks = (std::min)(layers, is_parallel_tag<ConcurrencyTag>() ? 8 * concurrency<ConcurrencyTag>() : 1);
-    if(m_features.enabled)
     {
+      // The chunks only change who computes what: the output is the
+      // concatenation of the layers in order, whatever the chunking.
+      const std::size_t chunks =
+          (std::min)(layers, is_parallel_tag<ConcurrencyTag>() ? 8 * concurrency<ConcurrencyTag>() : 1);
       std::vector<Marching_cubes_csg::Feature_chunk> buffers(chunks);
       concurrent_for<ConcurrencyTag>(
           chunks,
@@ -249,71 +229,432 @@ public:
           soup_creases.push_back({{e.v0, e.v1}});
       statistics.crease_edges = soup_creases.size();
       std::vector<Vector_3d>().swap(m_normals);
-      return;
-    }
-    std::vector<std::vector<std::array<std::size_t, 3>>> buffers(chunks);
-    concurrent_for<ConcurrencyTag>(
-        chunks,
-        [&](std::size_t c) { triangulate_layers(layers * c / chunks, layers * (c + 1) / chunks, buffers[c]); },
-        progress);
-    std::size_t total = 0;
-    for(const auto& b : buffers)
-      total += b.size();
-    triangles.reserve(total);
-    for(auto& b : buffers)
-    {
-      triangles.insert(triangles.end(), b.begin(), b.end());
-      std::vector<std::array<std::size_t, 3>>().swap(b);
     }
   }
 
-private:
-  // Calls f(i, j, axis, linear index of (i, j, k)) for the edges of plane k
-  // whose ends have different states, in vertex order.
-  // Rows of lattice points (along x) whose states are all 0 or all 1 are
-  // skipped wholesale: away from the surface a pass costs O(1) per row.
-  static constexpr std::uint8_t MIXED_ROW = 2;
-
-  // Whether all the rows given have the same constant state (no vertex
-  // between them, no surface in the cubes they span).
-  bool uniform_rows(std::uint8_t a, std::uint8_t b) const { return a == b && a != MIXED_ROW; }
-
-  template <typename F>
-  void for_each_vertex_edge(std::size_t k, const F& f) const
+  // Plain Marching Cubes, into `triangles` (whose elements are arrays of
+  // three indices of any integer type that holds the vertex count): a count
+  // pass, then every layer writes its triangles at its offset (Flying Edges'
+  // scheme: no buffers to merge, and the output does not depend on the
+  // concurrency).
+  template <typename Triangle>
+  void compute_plain_triangles(std::vector<Triangle>& triangles, const Progress& progress)
   {
-    const std::size_t nx = m_n[0], ny = m_n[1], nz = m_n[2];
-    const std::size_t plane = nx * ny;
-    const bool has_z = k + 1 < nz;
-    for(std::size_t j = 0; j < ny; ++j)
+    typedef typename Triangle::value_type Index;
+    triangles.clear();
+    if(m_n[0] < 2 || m_n[1] < 2 || m_n[2] < 2)
+      return;
+    if(m_vertex_offset.back() > std::size_t((std::numeric_limits<Index>::max)()))
+      throw Lattice_too_large_error("the output has more vertices than its index type can number");
+    const std::size_t layers = m_n[2] - 1;
+    const Marching_cubes_table& table = Marching_cubes_table::instance();
+    std::vector<std::size_t> offset(layers + 1, 0);
+    concurrent_for<ConcurrencyTag>(
+        layers,
+        [&](std::size_t k) {
+          std::size_t count = 0;
+          for_each_crossed_cube(k, k + 1, [&](std::size_t, std::size_t, std::size_t, unsigned code, const auto&) {
+            count += table.triangles(code).size();
+          });
+          offset[k + 1] = count;
+        },
+        progress.part(0, 0.3));
+    for(std::size_t k = 0; k < layers; ++k)
+      offset[k + 1] += offset[k];
+    triangles.resize(offset[layers]);
+    concurrent_for<ConcurrencyTag>(
+        layers,
+        [&](std::size_t k) {
+          Triangle* out = triangles.data() + offset[k];
+          for_each_crossed_cube(k, k + 1, [&](std::size_t, std::size_t, std::size_t, unsigned code,
+                                              const auto& vertex_of) {
+            for(const Marching_cubes_table::Triangle& t : table.triangles(code))
+              *out++ = Triangle{{Index(vertex_of(t[0])), Index(vertex_of(t[1])), Index(vertex_of(t[2]))}};
+          });
+        },
+        progress.part(0.3, 1));
+  }
+
+private:
+  // The x rows of one plane whose x line the classifier stores, by
+  // increasing j: row rows[r] has first state first[r] and x changes
+  // changes[begin[r] .. begin[r + 1]) (the indices i whose x edge (i, i + 1)
+  // joins two different states).  Every other row has the state of the
+  // empty mask everywhere.
+  struct Plane_changes
+  {
+    std::vector<std::uint32_t> rows;
+    std::vector<std::uint32_t> begin{0};
+    std::vector<std::uint32_t> changes;
+    std::vector<std::uint8_t> first;
+  };
+
+  // The x rows of one plane with vertex edges, by increasing j: row rows[r]
+  // has the codes codes[begin[r] .. begin[r + 1]) (increasing 3 * i + axis).
+  struct Plane_rows
+  {
+    std::vector<std::uint32_t> rows;
+    std::vector<std::uint32_t> begin{0};
+    std::vector<std::uint32_t> codes;
+  };
+
+  // A row's states: its first state and its x changes.
+  struct Row_states
+  {
+    bool first = false;
+    const std::uint32_t* changes = nullptr;
+    const std::uint32_t* changes_end = nullptr;
+
+    std::size_t inside_points(std::size_t nx) const
     {
-      const bool has_y = j + 1 < ny;
-      const std::uint8_t kind = m_row_kind[j + ny * k];
-      if(kind != MIXED_ROW && (!has_y || uniform_rows(kind, m_row_kind[j + 1 + ny * k])) &&
-         (!has_z || uniform_rows(kind, m_row_kind[j + ny * (k + 1)])))
-        continue;
-      std::size_t idx = m_lattice.linear_index(0, j, k);
-      for(std::size_t i = 0; i < nx; ++i, ++idx)
+      std::size_t inside = 0, from = 0;
+      bool s = first;
+      for(const std::uint32_t* c = changes; c != changes_end; ++c)
       {
-        const std::uint8_t s = m_state[idx];
-        if(i + 1 < nx && s != m_state[idx + 1])
-          f(i, j, 0, idx);
-        if(has_y && s != m_state[idx + nx])
-          f(i, j, 1, idx);
-        if(has_z && s != m_state[idx + plane])
-          f(i, j, 2, idx);
+        if(s)
+          inside += *c + 1 - from;
+        s = !s;
+        from = *c + 1;
+      }
+      return inside + (s ? nx - from : 0);
+    }
+    bool last_state() const { return first ^ (std::size_t(changes_end - changes) % 2 == 1); }
+  };
+
+  // Position of `j` in the sorted `rows`, or rows.size().
+  static std::size_t find_row(const std::vector<std::uint32_t>& rows, std::size_t j)
+  {
+    const auto it = std::lower_bound(rows.begin(), rows.end(), std::uint32_t(j));
+    return it != rows.end() && *it == j ? std::size_t(it - rows.begin()) : rows.size();
+  }
+
+  Row_states states_of(std::size_t k, std::size_t j) const
+  {
+    const Plane_changes& p = m_changes[k];
+    const std::size_t r = find_row(p.rows, j);
+    if(r == p.rows.size())
+      return Row_states{m_empty_state, nullptr, nullptr};
+    return Row_states{p.first[r] != 0, p.changes.data() + p.begin[r], p.changes.data() + p.begin[r + 1]};
+  }
+
+  // The codes of row j of plane k (an empty range for a row without vertex
+  // edges), and their position in the plane's codes.
+  struct Row_codes
+  {
+    const std::uint32_t* begin = nullptr;
+    const std::uint32_t* end = nullptr;
+    std::size_t offset = 0;
+    bool empty() const { return begin == end; }
+  };
+
+  Row_codes codes_of(std::size_t k, std::size_t j) const
+  {
+    const Plane_rows& p = m_planes[k];
+    const std::size_t r = find_row(p.rows, j);
+    if(r == p.rows.size())
+      return Row_codes();
+    return Row_codes{p.codes.data() + p.begin[r], p.codes.data() + p.begin[r + 1], p.begin[r]};
+  }
+
+  // The x changes of x line (j, k) (stored line `line`).
+  void x_changes_of_line(const Lattice_classifier_3::Stored_line& line, std::vector<std::uint32_t>& changes,
+                         std::uint8_t& first) const
+  {
+    std::uint64_t mask = line.start_mask;
+    bool state = m_inside(mask);
+    first = std::uint8_t(state);
+    for(const Lattice_crossing* c = line.crossings.begin(); c != line.crossings.end();)
+    {
+      const std::uint32_t index = c->index; // on the edge (index - 1, index)
+      for(; c != line.crossings.end() && c->index == index; ++c)
+        mask ^= std::uint64_t(1) << c->mesh;
+      const bool now = m_inside(mask);
+      if(now != state)
+      {
+        changes.push_back(index - 1);
+        state = now;
       }
     }
   }
 
-  // The vertex of a lattice edge, and (if `normal` is not null) the outward
-  // unit normal of the input triangle it lies on.
-  std::array<double, 3> vertex_position(std::size_t i, std::size_t j, std::size_t k, int axis, std::size_t idx,
+  void x_changes_of_plane(std::size_t k, Plane_changes& plane) const
+  {
+    const Lattice_classifier_3::Stored_lines lines = m_classifier.stored_lines(0, k);
+    plane.rows.reserve(lines.size());
+    plane.first.reserve(lines.size());
+    for(std::size_t l = 0; l < lines.size(); ++l)
+    {
+      const Lattice_classifier_3::Stored_line line = lines[l];
+      plane.rows.push_back(std::uint32_t(line.u));
+      plane.first.push_back(0);
+      x_changes_of_line(line, plane.changes, plane.first.back());
+      plane.begin.push_back(std::uint32_t(plane.changes.size()));
+    }
+  }
+
+  // Appends the indices i < nx where the states of two rows differ,
+  // increasing.
+  static void differences(Row_states a, Row_states b, std::size_t nx, std::vector<std::uint32_t>& out)
+  {
+    std::size_t i = 0;
+    while(i < nx)
+    {
+      // Both states are constant on [i, next].
+      std::size_t next = nx - 1;
+      if(a.changes != a.changes_end)
+        next = (std::min)(next, std::size_t(*a.changes));
+      if(b.changes != b.changes_end)
+        next = (std::min)(next, std::size_t(*b.changes));
+      if(a.first != b.first)
+        for(std::size_t x = i; x <= next; ++x)
+          out.push_back(std::uint32_t(x));
+      if(a.changes != a.changes_end && *a.changes == next)
+      {
+        a.first = !a.first;
+        ++a.changes;
+      }
+      if(b.changes != b.changes_end && *b.changes == next)
+      {
+        b.first = !b.first;
+        ++b.changes;
+      }
+      i = next + 1;
+    }
+  }
+
+  // Calls f(j) for every j in [0, limit) of the union of the sorted lists,
+  // each shifted by its offset (-1 or 0), in increasing order, once.
+  template <typename F>
+  static void for_each_row_of_union(const std::array<const std::vector<std::uint32_t>*, 3>& lists,
+                                    const std::array<int, 3>& shift, std::size_t limit, const F& f)
+  {
+    std::array<std::size_t, 3> at{{0, 0, 0}};
+    const std::size_t none = std::numeric_limits<std::size_t>::max();
+    for(;;)
+    {
+      std::size_t j = none;
+      for(int l = 0; l < 3; ++l)
+      {
+        if(lists[l] == nullptr)
+          continue;
+        // Skip the entries the shift moves below 0.
+        while(at[l] < lists[l]->size() && std::ptrdiff_t((*lists[l])[at[l]]) + shift[l] < 0)
+          ++at[l];
+        if(at[l] < lists[l]->size())
+          j = (std::min)(j, std::size_t(std::ptrdiff_t((*lists[l])[at[l]]) + shift[l]));
+      }
+      if(j == none || j >= limit)
+        return;
+      f(j);
+      for(int l = 0; l < 3; ++l)
+        if(lists[l] != nullptr && at[l] < lists[l]->size() &&
+           std::size_t(std::ptrdiff_t((*lists[l])[at[l]]) + shift[l]) == j)
+          ++at[l];
+    }
+  }
+
+  void vertex_edges_of_plane(std::size_t k, Plane_rows& plane) const
+  {
+    const std::size_t nx = m_n[0], ny = m_n[1], nz = m_n[2];
+    const bool has_above = k + 1 < nz;
+    std::vector<std::uint32_t> y, z;
+    // A row can have vertex edges only if it, the next row or the row above
+    // is listed: otherwise all three have the state of the empty mask.
+    const std::array<const std::vector<std::uint32_t>*, 3> lists{
+        {&m_changes[k].rows, &m_changes[k].rows, has_above ? &m_changes[k + 1].rows : nullptr}};
+    for_each_row_of_union(lists, {{0, -1, 0}}, ny, [&](std::size_t j) {
+      const Row_states here = states_of(k, j);
+      y.clear();
+      z.clear();
+      if(j + 1 < ny)
+        differences(here, states_of(k, j + 1), nx, y);
+      if(has_above)
+        differences(here, states_of(k + 1, j), nx, z);
+      // Merge the three increasing lists into codes 3 * i + axis.
+      const std::size_t before = plane.codes.size();
+      const std::uint32_t* x = here.changes;
+      const std::uint32_t* yc = y.data();
+      const std::uint32_t* zc = z.data();
+      const std::uint32_t* y_end = y.data() + y.size();
+      const std::uint32_t* z_end = z.data() + z.size();
+      while(x != here.changes_end || yc != y_end || zc != z_end)
+      {
+        std::uint32_t i = std::numeric_limits<std::uint32_t>::max();
+        if(x != here.changes_end) i = (std::min)(i, *x);
+        if(yc != y_end) i = (std::min)(i, *yc);
+        if(zc != z_end) i = (std::min)(i, *zc);
+        if(x != here.changes_end && *x == i) { plane.codes.push_back(3 * i); ++x; }
+        if(yc != y_end && *yc == i) { plane.codes.push_back(3 * i + 1); ++yc; }
+        if(zc != z_end && *zc == i) { plane.codes.push_back(3 * i + 2); ++zc; }
+      }
+      if(plane.codes.size() == before)
+        return;
+      if(plane.codes.size() >= std::numeric_limits<std::uint32_t>::max())
+        throw Lattice_too_large_error("more than 2^32 output vertices in one lattice plane");
+      plane.rows.push_back(std::uint32_t(j));
+      plane.begin.push_back(std::uint32_t(plane.codes.size()));
+    });
+  }
+
+  // Points on the lattice boundary inside the result: whole rows on the
+  // boundary planes and the rows j = 0 and ny - 1, the two ends of the
+  // other rows.  Unlisted rows have the empty mask's state: counted in bulk.
+  std::size_t boundary_points_inside() const
+  {
+    const std::size_t nx = m_n[0], ny = m_n[1], nz = m_n[2];
+    const std::size_t ends = nx > 1 ? 2 : 1;
+    std::size_t inside = 0;
+    for(std::size_t k = 0; k < nz; ++k)
+    {
+      const bool boundary_plane = k == 0 || k + 1 == nz;
+      const Plane_changes& p = m_changes[k];
+      std::size_t listed_whole = 0, listed_ends = 0;
+      for(std::size_t r = 0; r < p.rows.size(); ++r)
+      {
+        const Row_states row{p.first[r] != 0, p.changes.data() + p.begin[r], p.changes.data() + p.begin[r + 1]};
+        const std::size_t j = p.rows[r];
+        if(boundary_plane || j == 0 || j + 1 == ny)
+        {
+          inside += row.inside_points(nx);
+          ++listed_whole;
+        }
+        else
+        {
+          inside += std::size_t(row.first) + (nx > 1 ? std::size_t(row.last_state()) : 0);
+          ++listed_ends;
+        }
+      }
+      if(m_empty_state)
+      {
+        const std::size_t whole = boundary_plane ? ny : (ny > 1 ? 2 : 1);
+        inside += (whole - listed_whole) * nx + (ny - whole - listed_ends) * ends;
+      }
+    }
+    return inside;
+  }
+
+  // The mask along an x line, walked with increasing i.
+  class Line_mask
+  {
+  public:
+    Line_mask(const Lattice_classifier_3& classifier, std::size_t line)
+      : m_mask(classifier.start_mask(line))
+    {
+      const Lattice_classifier_3::Crossing_range c = classifier.crossings_on_line(0, line);
+      m_next = c.begin();
+      m_end = c.end();
+    }
+    // The mask of point i; i never decreases from call to call.
+    std::uint64_t at(std::size_t i)
+    {
+      for(; m_next != m_end && m_next->index <= i; ++m_next)
+        m_mask ^= std::uint64_t(1) << m_next->mesh;
+      return m_mask;
+    }
+    // The crossings on the edge (i, i + 1), after at(i).
+    Lattice_classifier_3::Crossing_range edge_after(std::size_t i) const
+    {
+      const Lattice_crossing* last = m_next;
+      while(last != m_end && last->index == i + 1)
+        ++last;
+      return Lattice_classifier_3::Crossing_range(m_next, last);
+    }
+
+  private:
+    std::uint64_t m_mask;
+    const Lattice_crossing* m_next;
+    const Lattice_crossing* m_end;
+  };
+
+  // The stored lines of one row along y or z, looked up with increasing u.
+  class Line_cursor
+  {
+  public:
+    Line_cursor(const Lattice_classifier_3& classifier, int axis, std::size_t row)
+      : m_lines(classifier.stored_lines(axis, row))
+    {}
+    // The crossings of the line at `u` on the edge ending at point `index`.
+    Lattice_classifier_3::Crossing_range edge(std::size_t u, std::uint32_t index)
+    {
+      while(m_at < m_lines.size() && m_lines[m_at].u < u)
+        ++m_at;
+      if(m_at == m_lines.size() || m_lines[m_at].u != u)
+        return Lattice_classifier_3::Crossing_range();
+      const Lattice_classifier_3::Crossing_range line = m_lines[m_at].crossings;
+      const Lattice_crossing* first = std::lower_bound(
+          line.begin(), line.end(), index, [](const Lattice_crossing& c, std::uint32_t x) { return c.index < x; });
+      const Lattice_crossing* last = first;
+      while(last != line.end() && last->index == index)
+        ++last;
+      return Lattice_classifier_3::Crossing_range(first, last);
+    }
+
+  private:
+    Lattice_classifier_3::Stored_lines m_lines;
+    std::size_t m_at = 0;
+  };
+
+  void vertices_of_plane(std::size_t k, std::vector<std::array<double, 3>>& points)
+  {
+    const std::size_t ny = m_n[1];
+    const Plane_rows& p = m_planes[k];
+    std::size_t id = m_vertex_offset[k];
+    for(std::size_t r = 0; r < p.rows.size(); ++r)
+    {
+      const std::size_t j = p.rows[r];
+      Line_mask here(m_classifier, j + ny * k);
+      // The masks of the next row and of the row above, made when needed;
+      // the y lines of plane k and the z lines of row j, walked with i.
+      std::optional<Line_mask> next_row, row_above;
+      Line_cursor y_lines(m_classifier, 1, k), z_lines(m_classifier, 2, j);
+      for(std::size_t c = p.begin[r]; c < p.begin[r + 1]; ++c, ++id)
+      {
+        const std::size_t i = p.codes[c] / 3;
+        const int axis = int(p.codes[c] % 3);
+        const std::uint64_t low_mask = here.at(i);
+        const bool from_low = m_inside(low_mask);
+        Lattice_classifier_3::Crossing_range crossings;
+        std::uint64_t inside_mask = low_mask;
+        if(axis == 0)
+        {
+          crossings = here.edge_after(i);
+          if(!from_low)
+            for(const Lattice_crossing& x : crossings)
+              inside_mask ^= std::uint64_t(1) << x.mesh;
+        }
+        else if(axis == 1)
+        {
+          crossings = y_lines.edge(i, std::uint32_t(j + 1));
+          if(!from_low)
+          {
+            if(!next_row)
+              next_row.emplace(m_classifier, j + 1 + ny * k);
+            inside_mask = next_row->at(i);
+          }
+        }
+        else
+        {
+          crossings = z_lines.edge(i, std::uint32_t(k + 1));
+          if(!from_low)
+          {
+            if(!row_above)
+              row_above.emplace(m_classifier, j + ny * (k + 1));
+            inside_mask = row_above->at(i);
+          }
+        }
+        points[id] = vertex_position(crossings, i, j, k, axis, from_low, inside_mask,
+                                     m_features.enabled ? &m_normals[id] : nullptr);
+      }
+    }
+  }
+
+  // The vertex of a lattice edge with these crossings whose inside end has
+  // mask `mask`, and (if `normal` is not null) the outward unit normal of the
+  // input triangle it lies on.
+  std::array<double, 3> vertex_position(const Lattice_classifier_3::Crossing_range& crossings, std::size_t i,
+                                        std::size_t j, std::size_t k, int axis, bool from_low, std::uint64_t mask,
                                         Vector_3d* normal) const
   {
-    const std::size_t stride = axis == 0 ? 1 : (axis == 1 ? m_n[0] : m_n[0] * m_n[1]);
-    const bool from_low = m_state[idx] != 0;
-    const std::uint64_t mask = m_classifier.mask(from_low ? idx : idx + stride);
-    const Lattice_classifier_3::Crossing_range crossings = m_classifier.crossings_on_edge(axis, i, j, k);
     const std::size_t c = csg_edge_crossing(crossings.begin(), crossings.size(), from_low, mask, m_inside);
     if(c == crossings.size())
       throw std::logic_error("marching_cubes_csg: the crossings of a lattice edge contradict the classification "
@@ -325,81 +666,106 @@ private:
     return p;
   }
 
-  // Local vertex number, in plane k, of each vertex edge: entry 3 * (i + nx * j) + axis.
-  void number_plane_vertices(std::size_t k, std::vector<std::uint32_t>& ids) const
-  {
-    std::uint32_t next = 0;
-    const std::size_t nx = m_n[0];
-    for_each_vertex_edge(k, [&](std::size_t i, std::size_t j, int axis, std::size_t) {
-      ids[3 * (i + nx * j) + std::size_t(axis)] = next++;
-    });
-  }
-
   // The walk both triangulations share: calls f(i, j, k, code, vertex_of)
   // for every cube of the layers [first, last) whose corners do not all have
   // the same state, layer by layer, then by cube (i fastest).  `code` has
   // bit c set iff corner c is inside; `vertex_of(e)` is the output vertex on
-  // cube edge e.  Rows of cubes whose four bounding point rows are uniform
-  // and equal are skipped wholesale.
+  // cube edge e.  Only the rows of cubes next to a row with vertex edges are
+  // looked at, and in them only the runs between x changes, so the work
+  // grows with the surface.
   template <typename F>
   void for_each_crossed_cube(std::size_t first, std::size_t last, const F& f) const
   {
-    if(first >= last)
-      return;
     const std::size_t nx = m_n[0], ny = m_n[1];
-    const std::size_t plane = nx * ny;
-    // Local vertex numbers of the planes k and k + 1 (see number_plane_vertices()).
-    std::vector<std::uint32_t> low(3 * plane), high(3 * plane);
-    number_plane_vertices(first, low);
-    // Corner c of the cube at idx is at idx + corner_offset[c].
-    std::array<std::size_t, 8> corner_offset;
-    for(int c = 0; c < 8; ++c)
-      corner_offset[c] = std::size_t(c & 1) + nx * std::size_t((c >> 1) & 1) + plane * std::size_t((c >> 2) & 1);
     for(std::size_t k = first; k < last; ++k)
     {
-      number_plane_vertices(k + 1, high);
-      const std::array<const std::uint32_t*, 2> ids{{low.data(), high.data()}};
-      const std::array<std::size_t, 2> offset{{m_vertex_offset[k], m_vertex_offset[k + 1]}};
-      for(std::size_t j = 0; j + 1 < ny; ++j)
-      {
-        const std::uint8_t kind = m_row_kind[j + ny * k];
-        if(uniform_rows(kind, m_row_kind[j + 1 + ny * k]) && uniform_rows(kind, m_row_kind[j + ny * (k + 1)]) &&
-           uniform_rows(kind, m_row_kind[j + 1 + ny * (k + 1)]))
-          continue;
-        std::size_t idx = m_lattice.linear_index(0, j, k);
-        for(std::size_t i = 0; i + 1 < nx; ++i, ++idx)
+      // A cube row whose first three point rows have no vertex edge: no x
+      // change, and the same state as the next row and the row above, so
+      // all four rows are uniform and equal.
+      const std::array<const std::vector<std::uint32_t>*, 3> lists{
+          {&m_planes[k].rows, &m_planes[k].rows, &m_planes[k + 1].rows}};
+      for_each_row_of_union(lists, {{0, -1, 0}}, ny - 1, [&](std::size_t j) {
+        // The point rows of the cube row: corner c is on row (c >> 1) & 3
+        // (its y and z offsets), at x offset c & 1.
+        const std::array<Row_codes, 4> rows{{codes_of(k, j), codes_of(k, j + 1), codes_of(k + 1, j),
+                                             codes_of(k + 1, j + 1)}};
+        const std::array<std::size_t, 4> plane_offset{
+            {m_vertex_offset[k], m_vertex_offset[k], m_vertex_offset[k + 1], m_vertex_offset[k + 1]}};
+        // Per row: the next x change (a code 3 i), the current state, and
+        // the cursor of vertex_of().
+        std::array<const std::uint32_t*, 4> x_next, cursor;
+        std::array<bool, 4> state;
+        auto next_x_change = [&](int r, const std::uint32_t* c) {
+          while(c != rows[r].end && *c % 3 != 0)
+            ++c;
+          return c;
+        };
+        for(int r = 0; r < 4; ++r)
         {
+          x_next[r] = next_x_change(r, rows[r].begin);
+          cursor[r] = rows[r].begin;
+          // A row without codes is uniform: its first state is its state.
+          state[r] = states_of(k + std::size_t(r >> 1), j + std::size_t(r & 1)).first;
+        }
+        std::size_t cube = 0; // the vertices of this cube: vertex_of reads it
+        const auto vertex_of = [&](int e) {
+          // The default face rule never needs a polygon centre vertex.
+          CGAL_assertion(!Marching_cubes_table::is_centre_vertex(unsigned(e)));
+          const std::array<int, 3> o = cube_edge_origin_offset(e);
+          const int r = o[1] + 2 * o[2];
+          const std::uint32_t code = std::uint32_t(3 * (cube + std::size_t(o[0])) + std::size_t(cube_edge_axis(e)));
+          // The cursor stays at the first code of this cube (monotone over
+          // the cubes of the row); this edge's code is a few entries on.
+          const std::uint32_t* c = cursor[r];
+          while(*c < 3 * cube)
+            ++c;
+          cursor[r] = c;
+          while(*c < code)
+            ++c;
+          CGAL_assertion(c != rows[r].end && *c == code);
+          return plane_offset[r] + rows[r].offset + std::size_t(c - rows[r].begin);
+        };
+        auto code_of = [](const std::array<bool, 4>& low, const std::array<bool, 4>& high) {
           unsigned code = 0;
           for(int c = 0; c < 8; ++c)
-            code |= unsigned(m_state[idx + corner_offset[c]]) << c;
-          if(code == 0 || code == 255)
-            continue;
-          const auto vertex_of = [&](int e) {
-            // The default face rule never needs a polygon centre vertex.
-            CGAL_assertion(!Marching_cubes_table::is_centre_vertex(unsigned(e)));
-            const std::array<int, 3> o = cube_edge_origin_offset(e);
-            const std::size_t entry =
-                3 * ((i + std::size_t(o[0])) + nx * (j + std::size_t(o[1]))) + std::size_t(cube_edge_axis(e));
-            return std::size_t(offset[o[2]] + ids[o[2]][entry]);
-          };
-          f(i, j, k, code, vertex_of);
+            code |= unsigned((c & 1) ? high[(c >> 1) & 3] : low[(c >> 1) & 3]) << c;
+          return code;
+        };
+        std::size_t i = 0;
+        while(i + 1 < nx)
+        {
+          // States are constant on the points i .. e: cubes i .. e - 1 have
+          // their corners' states; cube e joins them to the next ones.
+          std::size_t e = nx - 1;
+          for(int r = 0; r < 4; ++r)
+            if(x_next[r] != rows[r].end)
+              e = (std::min)(e, std::size_t(*x_next[r] / 3));
+          if(!(state[0] == state[1] && state[0] == state[2] && state[0] == state[3]))
+          {
+            const unsigned code = code_of(state, state);
+            for(cube = i; cube < e; ++cube)
+              f(cube, j, k, code, vertex_of);
+          }
+          if(e + 1 >= nx)
+            break;
+          std::array<bool, 4> after = state;
+          for(int r = 0; r < 4; ++r)
+            if(x_next[r] != rows[r].end && *x_next[r] / 3 == e)
+            {
+              after[r] = !after[r];
+              x_next[r] = next_x_change(r, x_next[r] + 1);
+            }
+          cube = e;
+          f(cube, j, k, code_of(state, after), vertex_of);
+          state = after;
+          i = e + 1;
         }
-      }
-      std::swap(low, high);
+      });
     }
   }
 
-  void triangulate_layers(std::size_t first, std::size_t last, std::vector<std::array<std::size_t, 3>>& out) const
-  {
-    const Marching_cubes_table& table = Marching_cubes_table::instance();
-    for_each_crossed_cube(first, last, [&](std::size_t, std::size_t, std::size_t, unsigned code, const auto& vertex_of) {
-      for(const Marching_cubes_table::Triangle& t : table.triangles(code))
-        out.push_back({{vertex_of(t[0]), vertex_of(t[1]), vertex_of(t[2])}});
-    });
-  }
-
-  // As triangulate_layers(), with the polygons whose normals disagree fanned
-  // around their feature vertex.
+  // The cubes of layers [first, last), the polygons whose normals disagree
+  // fanned around their feature vertex.
   void triangulate_feature_layers(std::size_t first, std::size_t last, const std::vector<Vector_3d>& points,
                                   Marching_cubes_csg::Feature_chunk& out) const
   {
@@ -418,12 +784,13 @@ private:
   const Regular_lattice_3& m_lattice;
   Expression_evaluator m_inside;
   std::array<std::size_t, 3> m_n;
-  std::vector<std::uint8_t, Default_init_allocator<std::uint8_t>> m_state;
-  std::vector<std::uint8_t> m_row_kind; // per x row (j + ny * k): 0, 1 or MIXED_ROW
+  std::vector<Plane_changes> m_changes;
+  std::vector<Plane_rows> m_planes;
   std::vector<std::size_t> m_vertex_offset;
   Feature_settings m_features;
   const std::vector<Triangle_tangent>& m_tangents;
   std::vector<Vector_3d> m_normals; // outward normal of each edge vertex (features only)
+  bool m_empty_state;               // the state of a point inside no mesh
 };
 
 // The triangles of the input meshes, each read through its map of the
@@ -459,9 +826,6 @@ inline void add_csg_warnings(Marching_cubes_csg_statistics& statistics)
   for(const Marching_cubes_csg_component_report& c : statistics.under_resolved_components)
     statistics.warnings.push_back("component " + std::to_string(c.component) + " of mesh #" +
                                   std::to_string(c.mesh) + " is not resolved by the lattice");
-  // The deprecated names.
-  statistics.output_vertices = statistics.number_of_vertices;
-  statistics.output_triangles = statistics.number_of_faces;
 }
 
 // The named parameters `sharp_features` (default true) and `feature_angle`
@@ -480,10 +844,14 @@ Marching_cubes_csg::Feature_settings feature_settings(const NamedParameters& np)
   return settings;
 }
 
-template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters>
+// Into `points` and `triangles` (arrays of three indices of any integer type
+// that holds the vertex count), both cleared first.
+template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters, typename Triangle>
 Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& meshes,
                                                       const Boolean_expression& expression,
-                                                      const Regular_lattice_3& lattice, Csg_soup& soup,
+                                                      const Regular_lattice_3& lattice,
+                                                      std::vector<std::array<double, 3>>& points,
+                                                      std::vector<Triangle>& triangles, Csg_features& soup_features,
                                                       const NamedParameters& np)
 {
   using parameters::choose_parameter;
@@ -504,22 +872,21 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   statistics.lattice_points = lattice.total_number_of_points();
   auto start = std::chrono::steady_clock::now();
   std::size_t read_meshes = 0;
-  std::vector<Lattice_triangle> triangles = read_csg_meshes(meshes, read_meshes, np);
+  std::vector<Lattice_triangle> input_triangles = read_csg_meshes(meshes, read_meshes, np);
   const bool check_resolution = choose_parameter(get_parameter(np, internal_np::resolution_check), true);
   const Marching_cubes_csg::Component_labels components =
-      check_resolution ? Marching_cubes_csg::label_components(triangles) : Marching_cubes_csg::Component_labels();
+      check_resolution ? Marching_cubes_csg::label_components(input_triangles) : Marching_cubes_csg::Component_labels();
   const Marching_cubes_csg::Feature_settings features = feature_settings(np);
   const std::vector<Marching_cubes_csg::Triangle_tangent> tangents =
-      features.enabled ? Marching_cubes_csg::triangle_tangents(triangles)
+      features.enabled ? Marching_cubes_csg::triangle_tangents(input_triangles)
                        : std::vector<Marching_cubes_csg::Triangle_tangent>();
   typedef Marching_cubes_csg_builder<ConcurrencyTag> Builder;
-  const std::size_t plane = lattice.number_of_points(0) * lattice.number_of_points(1);
-  const std::size_t reserved = lattice.total_number_of_points() * Builder::bytes_per_point() +
-                               plane * Builder::bytes_per_plane_point();
-  const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
-      std::move(triangles), number_of_meshes, lattice, max_memory, reserved, progress.part(0, 0.6));
+  const std::size_t reserved = lattice.number_of_points(2) * Builder::bytes_per_plane();
+  Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
+      std::move(input_triangles), number_of_meshes, lattice, max_memory, reserved, progress.part(0, 0.6));
 #if defined(CGAL_BOOLEAN_ISOSURFACING_3_CHECK_CONSISTENCY) || !defined(NDEBUG)
-  if(classifier.number_of_inconsistent_edges() != 0)
+  // O(points): only where the lattice is small enough to walk point by point.
+  if(lattice.total_number_of_points() <= (std::size_t(1) << 27) && classifier.number_of_inconsistent_edges() != 0)
     throw std::logic_error("marching_cubes_csg: crossings inconsistent with the classification (this is a bug)");
 #endif
   Builder builder(classifier, expression, features, tangents);
@@ -539,22 +906,51 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   const double seconds_yz = classifier.seconds(1) + classifier.seconds(2);
   statistics.seconds_classification = seconds_since(start) - seconds_yz;
 
-  start = std::chrono::steady_clock::now();
-  builder.compute_vertices(soup.points, progress.part(0.65, 0.8));
-  const std::size_t edge_vertices = soup.points.size();
-  statistics.seconds_edges = seconds_yz + seconds_since(start);
-
-  start = std::chrono::steady_clock::now();
-  builder.compute_triangles(soup.points, soup.triangles, soup.crease_edges, soup.corner_vertices, statistics,
-                            progress.part(0.8, 0.98));
   const double sliver = choose_parameter(get_parameter(np, internal_np::sliver_edge_length), features.enabled ? 0.1 : 0.0);
   if(!(sliver >= 0 && sliver < 0.5))
     throw Invalid_input_error("sliver_edge_length must be in [0, 0.5) cells, got " + std::to_string(sliver));
-  if(sliver > 0)
-    statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges(
-        soup.points, soup.triangles, edge_vertices, sliver * lattice.spacing(), soup.crease_edges, soup.corner_vertices);
-  statistics.number_of_vertices = soup.points.size();
-  statistics.number_of_faces = soup.triangles.size();
+
+  start = std::chrono::steady_clock::now();
+  points.clear();
+  triangles.clear();
+  soup_features = Csg_features();
+  builder.compute_vertices(points, progress.part(0.65, 0.8));
+  const std::size_t edge_vertices = points.size();
+  statistics.seconds_edges = seconds_yz + seconds_since(start);
+  // Nothing after the vertices reads the crossings: most of the memory of
+  // a fine lattice, released before the triangles take theirs.
+  classifier.release_crossings();
+
+  start = std::chrono::steady_clock::now();
+  if(!features.enabled && sliver == 0)
+    builder.compute_plain_triangles(triangles, progress.part(0.8, 0.98));
+  else
+  {
+    // The feature triangulation and the collapse work on std::size_t indices.
+    std::vector<std::array<std::size_t, 3>> work;
+    if(features.enabled)
+      builder.compute_feature_triangles(points, work, soup_features.crease_edges, soup_features.corner_vertices,
+                                        statistics, progress.part(0.8, 0.98));
+    else
+      builder.compute_plain_triangles(work, progress.part(0.8, 0.98));
+    if(sliver > 0)
+      statistics.collapsed_edges =
+          Marching_cubes_csg::collapse_short_edges(points, work, edge_vertices, sliver * lattice.spacing(),
+                                                   soup_features.crease_edges, soup_features.corner_vertices);
+    if constexpr(std::is_same<Triangle, std::array<std::size_t, 3>>::value)
+      triangles.swap(work);
+    else
+    {
+      typedef typename Triangle::value_type Index;
+      if(points.size() > std::size_t((std::numeric_limits<Index>::max)()))
+        throw Lattice_too_large_error("the output has more vertices than its index type can number");
+      triangles.resize(work.size());
+      for(std::size_t t = 0; t < work.size(); ++t)
+        triangles[t] = Triangle{{Index(work[t][0]), Index(work[t][1]), Index(work[t][2])}};
+    }
+  }
+  statistics.number_of_vertices = points.size();
+  statistics.number_of_faces = triangles.size();
   statistics.seconds_triangulation = seconds_since(start);
   add_csg_warnings(statistics);
   return statistics;

@@ -15,11 +15,13 @@
 //  - no triangle that moves turns by more than 90 degrees, becomes
 //    degenerate, or becomes a worse sliver than it was (unless it stays
 //    above a quality of 1e-4).
-// Feature vertices are never moved.  Each vertex takes part in at most one
-// collapse, so the order of the collapses (sorted edges) cannot matter more
-// than one level, and the pass is O(triangles).
+// Feature vertices are never moved.  In one pass each vertex takes part in
+// at most one collapse, so the order of the collapses (sorted edges) cannot
+// matter more than one level, and the pass is O(triangles); a few passes
+// are made.
 
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_vertex.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Sliver_flips.h>
 
 #include <algorithm>
 #include <array>
@@ -33,14 +35,16 @@ namespace Boolean_isosurfacing {
 namespace internal {
 namespace Marching_cubes_csg {
 
-/// Collapses the edges between two edge points (indices below
-/// `first_feature_vertex`) shorter than `max_length`, then removes the merged
-/// points and the deleted triangles, renumbering the points in order (and
-/// the crease edges and corners with them).  Returns the number of collapses.
-inline std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<std::array<std::size_t, 3>>& triangles,
-                                        std::size_t first_feature_vertex, double max_length,
-                                        std::vector<std::array<std::size_t, 2>>& creases,
-                                        std::vector<std::size_t>& corners)
+/// Passes of `collapse_short_edges()` at most.
+constexpr int max_collapse_passes = 4;
+
+/// One pass of `collapse_short_edges()`: each vertex takes part in at most
+/// one collapse.  `first_feature_vertex` is updated with the renumbering.
+inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
+                                             std::vector<std::array<std::size_t, 3>>& triangles,
+                                             std::size_t& first_feature_vertex, double max_length,
+                                             std::vector<std::array<std::size_t, 2>>& creases,
+                                             std::vector<std::size_t>& corners)
 {
   typedef std::array<std::size_t, 2> Edge;
   const double max_squared = max_length * max_length;
@@ -180,7 +184,40 @@ inline std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vec
     c = {{new_index[c[0]], new_index[c[1]]}};
   for(auto& c : corners)
     c = new_index[c];
+  first_feature_vertex = first_feature_vertex < nv ? new_index[first_feature_vertex] : next;
   return collapses;
+}
+
+/// Collapses the edges between two edge points (indices below
+/// `first_feature_vertex`) shorter than `max_length`, then removes the merged
+/// points and the deleted triangles, renumbering the points in order (and
+/// the crease edges and corners with them).  Returns the number of collapses.
+/// The passes are repeated (at most `max_collapse_passes`) while they
+/// collapse something: a vertex next to a lattice point often ends two
+/// short edges, and one pass moves each vertex once.  Then the remaining
+/// slivers are flipped away where the surface is nearly flat
+/// (`flip_slivers()`, the crease edges kept).
+inline std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<std::array<std::size_t, 3>>& triangles,
+                                        std::size_t first_feature_vertex, double max_length,
+                                        std::vector<std::array<std::size_t, 2>>& creases,
+                                        std::vector<std::size_t>& corners)
+{
+  std::size_t total = 0;
+  for(int pass = 0; pass < max_collapse_passes; ++pass)
+  {
+    const std::size_t collapses =
+        collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, creases, corners);
+    total += collapses;
+    if(collapses == 0)
+      break;
+  }
+  // What a collapse cannot remove (caps, needles at feature vertices):
+  // Lawson flips between nearly coplanar triangles, moving the surface by
+  // at most a fifth of the sliver length (Sliver_flips.h).
+  Sliver_flip_settings flip;
+  flip.max_deviation = 0.2 * max_length;
+  flip_slivers(points, triangles, creases, flip);
+  return total;
 }
 
 } // namespace Marching_cubes_csg

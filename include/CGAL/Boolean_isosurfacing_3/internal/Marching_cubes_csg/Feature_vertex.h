@@ -160,16 +160,21 @@ inline void clip_line_to_box(const Vector_3d& x, const Vector_3d& d, const Vecto
   }
 }
 
+/// Points of a crease line tried as a feature vertex: the one nearest to the
+/// polygon's mass point, then 8 evenly spaced ones across the cube.
+constexpr std::size_t crease_candidates = 9;
+
 /// The feature vertex of a polygon inside the cube [low, high], if it has
 /// one.  A corner whose point falls outside the cube is tried as a crease (the
 /// cube then sees the planes of a corner that lies in a neighbour).  A crease
-/// point outside the cube is moved along the crease line to the nearest
-/// point of the line inside the cube (the crease may clip a corner of the
-/// cube, far from the polygon's mass point); a crease line that misses the
-/// cube is no feature of this cube.  A point within rounding of the cube is
-/// clamped into it.
-/// `accept(x)` may refuse a candidate point (a fan that would fold): the
-/// next lower rank is then tried.
+/// vertex is a point of the crease line inside the cube: the nearest to the
+/// polygon's mass point (the crease may clip a corner of the cube, far from
+/// the mass point), else, if `accept` refuses it, other points of the line
+/// across the cube, nearest first; a crease line that misses the cube is no
+/// feature of this cube.  A point within rounding of the cube is clamped
+/// into it.
+/// `accept(x)` may refuse a candidate point (a fan that would fold): when
+/// every candidate of a rank is refused, the next lower rank is tried.
 template <typename Accept>
 Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, std::size_t n, const Vector_3d& low,
                             const Vector_3d& high, const Feature_settings& settings, const Accept& accept,
@@ -184,28 +189,50 @@ Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, s
     Vector_3d x, d;
     if(!solve_feature_quadric(points, normals, n, r, settings, x, d))
       continue;
-    bool inside = true;
-    for(int a = 0; a < 3; ++a)
-      inside = inside && x[a] >= low[a] - tolerance && x[a] <= high[a] + tolerance;
-    if(!inside && r == 2)
-    {
-      double t0, t1;
-      clip_line_to_box(x, d, low, high, t0, t1);
-      if(!(t0 <= t1))
-        continue;
-      const double t = t0 > 0 ? t0 : t1;
+    const auto clamped = [&](Vector_3d y) {
       for(int a = 0; a < 3; ++a)
-        x[a] += t * d[a];
-      inside = true;
+        y[a] = (std::min)((std::max)(y[a], low[a]), high[a]);
+      return y;
+    };
+    if(r == 3)
+    {
+      bool inside = true;
+      for(int a = 0; a < 3; ++a)
+        inside = inside && x[a] >= low[a] - tolerance && x[a] <= high[a] + tolerance;
+      if(inside && accept(clamped(x)))
+      {
+        result = clamped(x);
+        return Feature_kind::CORNER;
+      }
+      continue;
     }
-    if(!inside)
+    // A crease: the points of the crease line inside the cube, the one
+    // nearest to the mass point first.  When its fan folds (the polygon is
+    // not star-shaped from there), other points of the line inside the cube
+    // are tried, nearest first: any of them is on the crease.
+    double t0, t1;
+    clip_line_to_box(x, d, low, high, t0, t1);
+    if(!(t0 <= t1 + tolerance))
       continue;
-    for(int a = 0; a < 3; ++a)
-      x[a] = (std::min)((std::max)(x[a], low[a]), high[a]);
-    if(!accept(x))
-      continue;
-    result = x;
-    return r == 3 ? Feature_kind::CORNER : Feature_kind::CREASE;
+    const double best = (std::min)((std::max)(0.0, t0), t1);
+    std::array<double, crease_candidates> ts;
+    ts[0] = best;
+    for(std::size_t c = 1; c < crease_candidates; ++c)
+      ts[c] = t0 + (t1 - t0) * double(c - 1) / double(crease_candidates - 2);
+    std::sort(ts.begin() + 1, ts.end(),
+              [&](double u, double v) { return std::abs(u - best) < std::abs(v - best); });
+    for(double t : ts)
+    {
+      Vector_3d y;
+      for(int a = 0; a < 3; ++a)
+        y[a] = x[a] + t * d[a];
+      y = clamped(y);
+      if(accept(y))
+      {
+        result = y;
+        return Feature_kind::CREASE;
+      }
+    }
   }
   return Feature_kind::NONE;
 }
@@ -229,7 +256,13 @@ constexpr double degenerate_quality = 1e-9;
 /// `apex` keeps the orientation the crossing normals give: every fan
 /// triangle's normal must make an acute angle with the normals of its two
 /// polygon vertices, and no fan triangle may be degenerate.  Otherwise the
-/// apex would fold the surface, and the cube keeps its plain triangulation.
+/// apex would fold the surface, and the next candidate is tried (or the cube
+/// keeps its plain triangulation).  A weaker test (acute to the sum of the
+/// two normals: a chamfer triangle across a crease of 90 degrees or more is
+/// often obtuse to one of them without folding) recovered more creases but
+/// let fans cross neighbouring triangles (tray_bottom united with a moved
+/// copy at 128 cells: 17 intersecting pairs), so it is not used without a
+/// self-intersection repair (features.md).
 inline bool fan_is_unfolded(const Vector_3d* points, const Vector_3d* normals, std::size_t n, const Vector_3d& apex)
 {
   for(std::size_t i = 0; i < n; ++i)

@@ -7,7 +7,9 @@
 // Reads closed triangle meshes (any FaceListGraph) into flat arrays of
 // double triangles, validating them on the way.
 
+#include <CGAL/Boolean_isosurfacing_3/IO/Triangle_soup_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/check_closed_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/for_each_closed_mesh_triangle.h>
 
@@ -91,6 +93,57 @@ void append_lattice_triangles(const TriangleMesh& mesh, std::uint32_t mesh_index
 {
   append_lattice_triangles(mesh, get_const_property_map(CGAL::vertex_point, mesh), mesh_index, out);
 }
+
+/// Appends the triangles of the soup `soup` (input number `mesh_index`),
+/// after checking that it bounds a solid: indices in range, no repeated
+/// vertex, finite points, every directed edge matched by its opposite
+/// (non-manifold vertices are fine: the classification counts crossings).
+/// \throws Empty_input_error, Invalid_input_error, Open_mesh_error,
+/// Non_finite_value_error, each naming the mesh.
+inline void append_lattice_triangles(const Triangle_soup_3& soup, std::uint32_t mesh_index,
+                                     std::vector<Lattice_triangle>& out)
+{
+  const std::string name = "mesh #" + std::to_string(mesh_index);
+  if(soup.triangles.empty())
+    throw Empty_input_error(name + " has no face");
+  try
+  {
+    if(soup.points.size() >= (std::size_t(1) << 32))
+      throw Invalid_input_error("it has 2^32 points or more");
+    check_triangle_indices(soup.triangles, soup.points.size());
+    check_soup_is_closed(soup.triangles, soup.points.size());
+  }
+  catch(const Open_mesh_error& e)
+  {
+    throw Open_mesh_error(name + ": " + e.what());
+  }
+  catch(const Invalid_input_error& e)
+  {
+    throw Invalid_input_error(name + ": " + e.what());
+  }
+  for(std::size_t v = 0; v < soup.points.size(); ++v)
+  {
+    const std::array<double, 3>& p = soup.points[v];
+    if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    {
+      std::ostringstream message;
+      message << name << ": point #" << v << " has a non-finite coordinate (" << p[0] << ' ' << p[1] << ' ' << p[2]
+              << ")";
+      throw Non_finite_value_error(message.str());
+    }
+  }
+  out.reserve(out.size() + soup.triangles.size());
+  for(const Triangle_soup_3::Triangle& t : soup.triangles)
+    out.push_back(make_lattice_triangle(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]], mesh_index));
+}
+
+/// The number of triangles a mesh or soup gives (for reserving).
+template <typename TriangleMesh>
+std::size_t number_of_input_faces(const TriangleMesh& mesh)
+{
+  return std::size_t(num_faces(mesh));
+}
+inline std::size_t number_of_input_faces(const Triangle_soup_3& soup) { return soup.triangles.size(); }
 
 } // namespace internal
 } // namespace Boolean_isosurfacing

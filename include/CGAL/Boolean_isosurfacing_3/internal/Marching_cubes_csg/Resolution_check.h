@@ -205,24 +205,28 @@ inline std::size_t under_resolved_components(const Component_labels& labels, con
   const std::size_t n = labels.components.size();
   std::vector<std::size_t> crossings(n, 0), inside(n, 0);
   for(int axis = 0; axis < 3; ++axis)
-    for(std::size_t line = 0; line < classifier.number_of_lines(axis); ++line)
+    for(std::size_t v = 0; v < classifier.number_of_rows(axis); ++v)
     {
-      // The open crossing of each component on this line (few at a time).
-      std::vector<std::pair<std::uint32_t, std::uint32_t>> open;
-      for(const Lattice_crossing& c : classifier.crossings_on_line(axis, line))
+      const Lattice_classifier_3::Stored_lines lines = classifier.stored_lines(axis, v);
+      for(std::size_t l = 0; l < lines.size(); ++l)
       {
-        const std::uint32_t id = labels.of_triangle[c.triangle];
-        ++crossings[id];
-        if(axis != 0)
-          continue;
-        const auto found = std::find_if(open.begin(), open.end(), [&](const auto& o) { return o.first == id; });
-        if(found == open.end())
-          open.emplace_back(id, c.index);
-        else
+        // The open crossing of each component on this line (few at a time).
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> open;
+        for(const Lattice_crossing& c : lines[l].crossings)
         {
-          // Entering at edge (a - 1, a), leaving at (b - 1, b): points a .. b - 1.
-          inside[id] += std::size_t(c.index - found->second);
-          open.erase(found);
+          const std::uint32_t id = labels.of_triangle[c.triangle];
+          ++crossings[id];
+          if(axis != 0)
+            continue;
+          const auto found = std::find_if(open.begin(), open.end(), [&](const auto& o) { return o.first == id; });
+          if(found == open.end())
+            open.emplace_back(id, c.index);
+          else
+          {
+            // Entering at edge (a - 1, a), leaving at (b - 1, b): points a .. b - 1.
+            inside[id] += std::size_t(c.index - found->second);
+            open.erase(found);
+          }
         }
       }
     }
@@ -281,54 +285,54 @@ inline Thin_result_measure measure_thin_result(const Lattice_classifier_3& class
   const Regular_lattice_3& lattice = classifier.lattice();
   const std::array<std::size_t, 3>& n = lattice.number_of_points();
   const double area = lattice.spacing() * lattice.spacing();
-  const std::size_t meshes = classifier.number_of_meshes();
   Thin_result_measure m;
   std::vector<double> thin_lengths;
   std::array<double, 3> line_volume{{0, 0, 0}}, thin_volume{{0, 0, 0}};
   for(int axis = 0; axis < 3; ++axis)
-    for(std::size_t line = 0; line < classifier.number_of_lines(axis); ++line)
+    for(std::size_t row = 0; row < classifier.number_of_rows(axis); ++row)
     {
-      const Lattice_classifier_3::Crossing_range crossings = classifier.crossings_on_line(axis, line);
-      if(crossings.empty())
-        continue;
-      // The line's first point; its masks give the state the crossings toggle.
-      const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
-      std::array<std::size_t, 3> first{{0, 0, 0}};
-      first[u] = line % n[u];
-      first[v] = line / n[u];
-      std::uint64_t state = 0;
-      for(std::size_t mesh = 0; mesh < meshes; ++mesh)
-        if(classifier.is_inside(mesh, first[0], first[1], first[2]))
-          state |= std::uint64_t(1) << mesh;
-      bool inside = expression.evaluate(state);
-      bool have_change = false;
-      std::uint32_t change_index = 0;
-      double change_position = lattice.coordinate(axis, 0);
-      for(const Lattice_crossing& c : crossings)
+      const Lattice_classifier_3::Stored_lines lines = classifier.stored_lines(axis, row);
+      for(std::size_t l = 0; l < lines.size(); ++l)
       {
-        state ^= std::uint64_t(1) << c.mesh;
-        const bool now = expression.evaluate(state);
-        if(now == inside)
+        const Lattice_classifier_3::Crossing_range crossings = lines[l].crossings;
+        if(crossings.empty())
           continue;
-        if(have_change)
+        // The line's first point; its mask gives the state the crossings toggle.
+        const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+        std::array<std::size_t, 3> first{{0, 0, 0}};
+        first[u] = lines[l].u;
+        first[v] = row;
+        std::uint64_t state = axis == 0 ? lines[l].start_mask : classifier.mask(first[0], first[1], first[2]);
+        bool inside = expression.evaluate(state);
+        bool have_change = false;
+        std::uint32_t change_index = 0;
+        double change_position = lattice.coordinate(axis, 0);
+        for(const Lattice_crossing& c : crossings)
         {
-          ++m.intervals;
-          if(c.index == change_index)
+          state ^= std::uint64_t(1) << c.mesh;
+          const bool now = expression.evaluate(state);
+          if(now == inside)
+            continue;
+          if(have_change)
           {
-            ++m.thin_intervals;
-            thin_volume[axis] += (c.position - change_position) * area;
-            thin_lengths.push_back(c.position - change_position);
+            ++m.intervals;
+            if(c.index == change_index)
+            {
+              ++m.thin_intervals;
+              thin_volume[axis] += (c.position - change_position) * area;
+              thin_lengths.push_back(c.position - change_position);
+            }
           }
+          if(inside)
+            line_volume[axis] += (c.position - change_position) * area;
+          inside = now;
+          have_change = true;
+          change_index = c.index;
+          change_position = c.position;
         }
         if(inside)
-          line_volume[axis] += (c.position - change_position) * area;
-        inside = now;
-        have_change = true;
-        change_index = c.index;
-        change_position = c.position;
+          line_volume[axis] += (lattice.coordinate(axis, n[axis] - 1) - change_position) * area;
       }
-      if(inside)
-        line_volume[axis] += (lattice.coordinate(axis, n[axis] - 1) - change_position) * area;
     }
   for(int axis = 0; axis < 3; ++axis)
     if(thin_volume[axis] * m.line_volume > m.thin_volume * line_volume[axis] || m.line_volume == 0)
