@@ -27,7 +27,7 @@ export LSAN_OPTIONS="suppressions=$(pwd)/../scripts/lsan.supp"
 # paths quicker tests already run (under ASan the contouring references take
 # 3 to 8 minutes each).
 skip='^(headers_compile_alone|headers_compile_together|install_package|downstream_find_package'
-skip+='|Reconstruct\..*|Topology\.Shared_meshes_60k.*|TbisoTool\.BunnyOnAGridHasOneCutLoop'
+skip+='|Reconstruct\..*|Topology\..*|TbisoTool\.BunnyOnAGridHasOneCutLoop'
 # The sharp-feature cases against an exact corefinement (1-5 min each under
 # ASan; BoxMinusMovedBox and the table tests keep the feature code covered).
 skip+='|CsgFeatures\.(CylinderUnitedWithABox|BoxIntersectedWithARotatedBox|IsotropicRemeshingKeepsTheCreases)'

@@ -3,7 +3,7 @@
 // (the contour-tracing assignment, [ContourTracing] in the manual's references).
 //
 //   contour [FILE|-] [-o out.tris|out.off|out.ply|out.obj|out.stl] [--spacing h | --cells N] [--k K]
-//           [--rho R] [--delta D] [--max-jump J]
+//           [--rho R] [--delta D] [--hoppe] [--max-jump J]
 //   and the common options of cli.h (--threads, --sequential, --json, --quiet, --version)
 //
 // FILE: .pts (the seed's format, or Hoppe's A3d points), .xyz, .pwn, .ply;
@@ -53,7 +53,7 @@ using biso_tools::Tool;
 
 const char* description =
     "contour: oriented (or unoriented) point samples -> closed triangle mesh (Hoppe et al. 1992)\n"
-    "usage: contour [FILE|-] [-o OUT] [--spacing h | --cells N] [--k K] [--rho R] [--delta D] [--max-jump J]\n"
+    "usage: contour [FILE|-] [-o OUT] [--spacing h | --cells N] [--k K] [--rho R] [--delta D] [--hoppe] [--max-jump J]\n"
     "  FILE: .pts (x y z [nx ny nz] per line), .xyz, .pwn or .ply; '-' reads .pts from standard input; with no\n"
     "  FILE standard input is read too, unless it is a terminal (then this is a usage error: give FILE, or '-'\n"
     "  to type the points, ended by Ctrl-D).\n"
@@ -75,6 +75,7 @@ struct Options
   std::string lattice_flag; // "--spacing h" or "--cells N", for messages
   std::optional<double> rho, delta;
   std::optional<double> max_jump; // in cells; the library's default without it
+  bool hoppe_only = false;        // --hoppe, or --max-jump: Hoppe's f alone
   std::size_t k = 15;
 };
 
@@ -96,9 +97,12 @@ void add_options(Tool& tool, Options& o, Option_text& t)
   app.add_option("--k", t.k, "neighbours per tangent plane (whole, 3 to 1024; default 15)")->type_name("K");
   app.add_option("--rho", t.rho, "sampling density (positive; default estimated)")->type_name("R");
   app.add_option("--delta", t.delta, "noise level (>= 0; default estimated)")->type_name("D");
+  app.add_flag("--hoppe", o.hoppe_only,
+               "Hoppe's f alone: skip cubes with an undefined corner or a jump of f (holes), instead of one "
+               "consistent sign per lattice point (winding number; closed output)");
   app.add_option("--max-jump", t.max_jump,
-                 "skip cubes where f jumps by more than J cells (>= 0; inf = Hoppe's plain rule; default 3 cells + "
-                 "2 delta)")
+                 "with Hoppe's f alone (implies --hoppe): skip cubes where f jumps by more than J cells (>= 0; inf = "
+                 "Hoppe's plain rule; default 3 cells + 2 delta)")
       ->type_name("J");
 }
 
@@ -131,7 +135,10 @@ void check_options(Tool& tool, Options& o, const Option_text& t)
   if(app.count("--delta"))
     o.delta = biso_tools::parse_real("--delta", t.delta, Sign_rule::NON_NEGATIVE);
   if(app.count("--max-jump"))
+  {
     o.max_jump = biso_tools::parse_real("--max-jump", t.max_jump, Sign_rule::NON_NEGATIVE, /* allow_infinity = */ true);
+    o.hoppe_only = true;
+  }
   const std::vector<std::string>& files = tool.positionals();
   if(files.size() > 1)
     throw Usage_error("more than one input file: " + biso_tools::quote_arg(files[0]) + " and " +
@@ -263,12 +270,14 @@ BI::Contouring_statistics contour(Tool& tool, const Options& options, const BI::
                                   std::vector<std::array<std::size_t, 3>>& triangles)
 {
   const std::function<bool(double)> progress = tool.progress("contouring");
+  const bool consistent = !options.hoppe_only;
   if(options.max_jump)
     return BI::contour_signed_distance<ConcurrencyTag>(
         lattice, field, points, triangles,
-        BI::parameters::maximum_jump(*options.max_jump * lattice.spacing()).callback(progress));
+        BI::parameters::maximum_jump(*options.max_jump * lattice.spacing(), BI::parameters::consistent_signs(consistent))
+            .callback(progress));
   return BI::contour_signed_distance<ConcurrencyTag>(lattice, field, points, triangles,
-                                                     CGAL::parameters::callback(progress));
+                                                     BI::parameters::consistent_signs(consistent).callback(progress));
 }
 
 void report_field(Tool& tool, const Field& field)
@@ -310,7 +319,9 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_statistic
       << " cubes visited, " << report.surface_cubes << " crossed, " << report.skipped_cubes
       << " skipped for an undefined corner, " << report.border_exits << " lattice-border exits, "
       << report.discontinuous_cubes << " skipped for a jump of f, " << report.removed_closed_components
-      << " closed pieces smaller than rho removed)\n";
+      << " closed pieces smaller than rho removed)\n"
+      << "signs: " << (report.consistent_signs ? "consistent (winding number)" : "Hoppe's f alone") << ", "
+      << report.removed_membranes << " membranes across wide openings removed\n";
   out << "triangles: " << triangles << ", vertices: " << vertices << "\n";
   biso_tools::Json_object& j = tool.summary();
   j.set("k", field.number_of_neighbors());
@@ -320,6 +331,8 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_statistic
   j.set_raw("cells", biso_tools::json_number_array({double(report.number_of_cells[0]),
                                                     double(report.number_of_cells[1]),
                                                     double(report.number_of_cells[2])}));
+  j.set("consistent_signs", report.consistent_signs);
+  j.set("removed_membranes", report.removed_membranes);
   j.set("vertices", vertices);
   j.set("faces", triangles);
 }

@@ -29,4 +29,11 @@ public:
   double default_cell_size() const;
   /// The value at `p`, or an empty optional where the function is undefined.
   std::optional<double> operator()(const Point_3& p) const;
+  /// Optional, with `distance_to_samples()`: a value defined everywhere, one
+  /// consistent sign per point; when the field has both, the contouring uses
+  /// it (named parameter `consistent_signs`, default `true`), skips no cube,
+  /// and cuts away the pieces far from the samples that span wide openings.
+  double consistent_value(const Point_3& p) const;
+  /// Optional, with `consistent_value()`: the distance from `p` to the nearest sample.
+  double distance_to_samples(const Point_3& p) const;
 };

@@ -36,6 +36,11 @@ struct Contouring_statistics : Algorithm_statistics
   std::size_t split_vertices = 0;                ///< vertices pinched between two holes, duplicated
   std::size_t filled_holes = 0;                  ///< border loops smaller than maximum_hole_size, triangulated
   std::size_t walk_seeds = 0;                    ///< crossed cubes reached by walking down |f| from a sample
+  /// One consistent value per lattice point (the field's `consistent_value()`):
+  /// no cube is skipped, so the contour is closed and 2-manifold before the
+  /// membranes are removed.
+  bool consistent_signs = false;
+  std::size_t removed_membranes = 0;             ///< surface pieces far from every sample, spanning a wide opening, removed
   /// No triangle came out: f changes sign in no cube reached from the samples
   /// (or only in skipped ones).  `contour_point_set` throws `Empty_contour_error`.
   bool empty_output = false;

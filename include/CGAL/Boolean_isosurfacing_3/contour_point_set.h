@@ -158,16 +158,20 @@ Regular_lattice_3 contouring_lattice(const ContouringField_3& field,
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_jump}
- *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
+ *     \cgalParamDescription{with Hoppe's f alone (`consistent_signs(false)`): a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
  *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{minimum_closed_component_size}
  *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
  *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{consistent_signs}
+ *     \cgalParamDescription{one consistent value per lattice point, the field's `consistent_value()` (Hoppe's f where the winding number of the samples does not contradict it): no cube is skipped and the contour is closed and 2-manifold, then cut open only across openings wider than `maximum_hole_size`; `false` gives Hoppe's f alone (cubes with an undefined corner or a jump of f skipped, holes up to `maximum_hole_size` filled)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true` when the field has `consistent_value()` and `distance_to_samples()`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_hole_size}
- *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
- *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
+ *     \cgalParamDescription{with consistent signs: the widest opening of the samples that stays closed (a piece of the contour farther than rho + delta from every sample and reaching farther than half of it is cut away); with Hoppe's f alone: the largest hole, left by skipped cubes, that is closed}
+ *     \cgalParamType{`double`} \cgalParamDefault{max(6 (rho + delta), the samples' bounding-box diagonal / 5) with consistent signs, 2 rho otherwise}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{lattice_margin}
  *     \cgalParamDescription{cells added around the bounding box of the samples}
@@ -256,16 +260,20 @@ Contouring_statistics contour_signed_distance(const Regular_lattice_3& lattice, 
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_jump}
- *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
+ *     \cgalParamDescription{with Hoppe's f alone (`consistent_signs(false)`): a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
  *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{minimum_closed_component_size}
  *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
  *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{consistent_signs}
+ *     \cgalParamDescription{one consistent value per lattice point, the field's `consistent_value()` (Hoppe's f where the winding number of the samples does not contradict it): no cube is skipped and the contour is closed and 2-manifold, then cut open only across openings wider than `maximum_hole_size`; `false` gives Hoppe's f alone (cubes with an undefined corner or a jump of f skipped, holes up to `maximum_hole_size` filled)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true` when the field has `consistent_value()` and `distance_to_samples()`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_hole_size}
- *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
- *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
+ *     \cgalParamDescription{with consistent signs: the widest opening of the samples that stays closed (a piece of the contour farther than rho + delta from every sample and reaching farther than half of it is cut away); with Hoppe's f alone: the largest hole, left by skipped cubes, that is closed}
+ *     \cgalParamType{`double`} \cgalParamDefault{max(6 (rho + delta), the samples' bounding-box diagonal / 5) with consistent signs, 2 rho otherwise}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{lattice_margin}
  *     \cgalParamDescription{cells added around the bounding box of the samples}
@@ -295,8 +303,11 @@ Contouring_statistics contour_point_set(const Regular_lattice_3& lattice, const 
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
  * As above, into a `MutableFaceGraph` (e.g. `Surface_mesh`), which is cleared
- * first (the package's rule for every output), with the same named parameters.  When no cube was skipped the soup is a closed 2-manifold by
- * construction (the table is watertight).  Skipped cubes leave holes, and two
+ * first (the package's rule for every output), with the same named parameters.  With consistent signs (the
+ * default) no cube is skipped: the soup is a closed 2-manifold by construction
+ * (the table is watertight), cut open only across openings of the samples
+ * wider than `maximum_hole_size`, along simple border loops.  With Hoppe's f
+ * alone, skipped cubes leave holes, and two
  * holes can pinch a vertex (two skipped cubes diagonal around a lattice edge):
  * such vertices are duplicated (PMP::orient_polygon_soup) so that the mesh is
  * a valid, still consistently oriented, surface with border.
@@ -340,16 +351,20 @@ Contouring_statistics contour_point_set(const Regular_lattice_3& lattice, const 
  *     \cgalParamType{`std::size_t`} \cgalParamDefault{unused}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_jump}
- *     \cgalParamDescription{a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
+ *     \cgalParamDescription{with Hoppe's f alone (`consistent_signs(false)`): a cube with a sign-changing edge along which f changes by more than it is a discontinuity of f and is skipped; `std::numeric_limits<double>::infinity()` gives Hoppe's plain rule}
  *     \cgalParamType{`double`} \cgalParamDefault{3 r + 2 delta}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{minimum_closed_component_size}
  *     \cgalParamDescription{closed pieces of the output whose bounding box has a smaller diagonal are removed (the "bubbles" of Hoppe's f); 0 keeps all}
  *     \cgalParamType{`double`} \cgalParamDefault{rho (`field.sampling_density()`)}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{consistent_signs}
+ *     \cgalParamDescription{one consistent value per lattice point, the field's `consistent_value()` (Hoppe's f where the winding number of the samples does not contradict it): no cube is skipped and the contour is closed and 2-manifold, then cut open only across openings wider than `maximum_hole_size`; `false` gives Hoppe's f alone (cubes with an undefined corner or a jump of f skipped, holes up to `maximum_hole_size` filled)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true` when the field has `consistent_value()` and `distance_to_samples()`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{maximum_hole_size}
- *     \cgalParamDescription{the largest hole, left by skipped cubes, that is closed}
- *     \cgalParamType{`double`} \cgalParamDefault{2 rho}
+ *     \cgalParamDescription{with consistent signs: the widest opening of the samples that stays closed (a piece of the contour farther than rho + delta from every sample and reaching farther than half of it is cut away); with Hoppe's f alone: the largest hole, left by skipped cubes, that is closed}
+ *     \cgalParamType{`double`} \cgalParamDefault{max(6 (rho + delta), the samples' bounding-box diagonal / 5) with consistent signs, 2 rho otherwise}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{lattice_margin}
  *     \cgalParamDescription{cells added around the bounding box of the samples}

@@ -34,6 +34,7 @@
   X(maximum_jump_t, maximum_jump)                     \
   X(minimum_closed_component_size_t, minimum_closed_component_size) \
   X(maximum_hole_size_t, maximum_hole_size)           \
+  X(consistent_signs_t, consistent_signs)             \
   X(close_at_domain_boundary_t, close_at_domain_boundary) \
   X(slab_layers_t, slab_layers)                       \
   X(sharp_features_t, sharp_features)                 \

@@ -121,6 +121,19 @@ Contouring_lattice default_contouring_lattice(const ContouringField_3& field, co
   return lattice;
 }
 
+// Whether the field has `consistent_value(p)` (a double everywhere) and
+// `distance_to_samples(p)`, as `Tangent_plane_signed_distance_3` has.
+template <typename Field, typename = void>
+struct Has_consistent_value : std::false_type
+{};
+template <typename Field>
+struct Has_consistent_value<
+  Field, std::void_t<decltype(double(std::declval<const Field&>().consistent_value(
+                        std::declval<const typename Field::Point_3&>()))),
+                     decltype(double(std::declval<const Field&>().distance_to_samples(
+                        std::declval<const typename Field::Point_3&>())))>> : std::true_type
+{};
+
 // One line per reason the output lacks the closed-2-manifold guarantee.
 inline void add_contouring_warnings(Contouring_statistics& report)
 {
@@ -145,10 +158,11 @@ class Contour_traversal
 public:
   typedef typename ContouringField_3::Point_3 Point_3;
 
+  // `consistent`: the values are the field's `consistent_value()`, defined everywhere.
   Contour_traversal(const Contouring_lattice& lattice, const ContouringField_3& field, double max_jump,
-                    Contouring_statistics& report, const Progress& progress)
+                    bool consistent, Contouring_statistics& report, const Progress& progress)
     : field(field), samples(field.points()), r(lattice.r), cells(lattice.cells), origin(lattice.origin),
-      max_jump(max_jump), report(report), progress(progress)
+      max_jump(max_jump), consistent(consistent), report(report), progress(progress)
   {
     value_cache.reserve(4 * samples.size());
     visited.reserve(4 * samples.size());
@@ -352,7 +366,16 @@ private:
     if(found != value_cache.end())
       return found->second;
     const auto start = std::chrono::steady_clock::now();
-    const std::optional<double> f = field(lattice_point(i, j, k));
+    std::optional<double> f;
+    if constexpr(Has_consistent_value<ContouringField_3>::value)
+    {
+      if(consistent)
+        f = field.consistent_value(lattice_point(i, j, k));
+      else
+        f = field(lattice_point(i, j, k));
+    }
+    else
+      f = field(lattice_point(i, j, k));
     m_field_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++report.field_evaluations;
     double v = std::numeric_limits<double>::quiet_NaN();
@@ -453,6 +476,7 @@ private:
   const std::array<std::int64_t, 3> cells;
   const std::array<double, 3> origin;
   const double max_jump;
+  const bool consistent;
   Contouring_statistics& report;
   const Progress& progress;
   std::unordered_map<std::uint64_t, double> value_cache;
@@ -490,9 +514,18 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
   // wall: "phantom" sheets that run away from the surface.  Such cubes are
   // skipped (holes instead of phantom sheets).  Factor 3: slack for the plane
   // switches near the surface; with 2 r, cactus.pts lost 4 genuine cubes.
-  const double max_jump = choose_parameter(get_parameter(np, internal_np::maximum_jump),
-                                           3 * r + 2 * field.noise_level());
-  Contour_traversal<ContouringField_3> traversal(lattice, field, max_jump, report, progress);
+  // One consistent value per lattice point when the field has one (and the
+  // caller did not ask for Hoppe's f alone): then no cube is skipped and the
+  // contour is closed and 2-manifold by the table's theorem.
+  bool consistent = false;
+  if constexpr(Has_consistent_value<ContouringField_3>::value)
+    consistent = choose_parameter(get_parameter(np, internal_np::consistent_signs), true);
+  report.consistent_signs = consistent;
+  // With consistent values a jump of f is a steep crossing, not a gap: kept.
+  const double max_jump = consistent ? std::numeric_limits<double>::infinity()
+                                     : double(choose_parameter(get_parameter(np, internal_np::maximum_jump),
+                                                               3 * r + 2 * field.noise_level()));
+  Contour_traversal<ContouringField_3> traversal(lattice, field, max_jump, consistent, report, progress);
   traversal.seed_from_samples();
   traversal.walk_from_samples();
   const std::size_t first_vertex = out_points.size();
@@ -514,6 +547,38 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
       internal::remove_small_closed_components(out_points, out_triangles, first_vertex, first_triangle, bubble_size);
     next_vertex = out_points.size();
     report.number_of_faces = out_triangles.size() - first_triangle;
+  }
+  // Membranes: with consistent values the contour closes every opening of
+  // the samples; the pieces far from every sample that span a wide opening
+  // (the rim of an open scan, Hoppe's distcap.pts) are cut away, the narrow
+  // ones (gaps, unsampled socket bottoms) stay.
+  if constexpr(Has_consistent_value<ContouringField_3>::value)
+  {
+    // Witnessed: within rho + delta of a sample (f is defined that far).
+    // Default widest gap closed: 6 (rho + delta), and at least a fifth of the
+    // samples' extent: a gap left by occlusion in merged scans can be many
+    // sample spacings wide, an open rim (distcap.pts: 0.70 across, diagonal
+    // 1.26) spans a good part of the object.
+    const double reach = field.sampling_density() + field.noise_level();
+    Bbox_3 extent;
+    for(const auto& p : field.points())
+      extent += Bbox_3(CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]),
+                       CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]));
+    const double diagonal = std::sqrt(CGAL::square(extent.xmax() - extent.xmin()) +
+                                      CGAL::square(extent.ymax() - extent.ymin()) +
+                                      CGAL::square(extent.zmax() - extent.zmin()));
+    const double max_hole = choose_parameter(get_parameter(np, internal_np::maximum_hole_size),
+                                             (std::max)(6 * reach, diagonal / 5));
+    if(!(max_hole >= 0))
+      throw Invalid_input_error("maximum_hole_size must be >= 0");
+    if(consistent && out_triangles.size() > first_triangle)
+    {
+      report.removed_membranes = internal::remove_unwitnessed_membranes(
+        out_points, out_triangles, first_vertex, first_triangle, field.points(),
+        [&field](const auto& p) { return double(field.distance_to_samples(p)); }, reach, max_hole / 2);
+      next_vertex = out_points.size();
+      report.number_of_faces = out_triangles.size() - first_triangle;
+    }
   }
   // Holes: a skipped cube (undefined corner, jump of f)
   // leaves a hole in an otherwise closed surface.  Without one the soup is a

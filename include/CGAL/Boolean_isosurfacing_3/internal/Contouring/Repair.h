@@ -229,6 +229,285 @@ std::pair<std::size_t, std::size_t> close_small_holes(PointOutRange& points, Tri
   return {split, filled};
 }
 
+/// The faces of a soup around each vertex, in CSR form.
+struct Vertex_faces
+{
+  std::vector<std::size_t> begin, faces;
+  template <typename TriangleRange>
+  Vertex_faces(const TriangleRange& triangles, std::size_t first_vertex, std::size_t first_triangle, std::size_t nv,
+               const std::vector<char>& removed)
+    : begin(nv + 1, 0)
+  {
+    for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+      if(!removed[t - first_triangle])
+        for(int i = 0; i < 3; ++i)
+          ++begin[std::size_t(triangles[t][i]) - first_vertex + 1];
+    for(std::size_t v = 0; v < nv; ++v)
+      begin[v + 1] += begin[v];
+    faces.resize(begin[nv]);
+    std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+    for(std::size_t t = first_triangle; t < triangles.size(); ++t)
+      if(!removed[t - first_triangle])
+        for(int i = 0; i < 3; ++i)
+          faces[fill[std::size_t(triangles[t][i]) - first_vertex]++] = t - first_triangle;
+  }
+};
+
+/// The samples bucketed in a uniform grid of step `h`: whether a point is
+/// within h of a sample, by looking at the 27 cells around it (the membrane
+/// rule asks this of every output vertex; a kd-tree query each costs more).
+class Sample_grid
+{
+public:
+  template <typename PointRange>
+  Sample_grid(const PointRange& samples, double h) : m_h(h)
+  {
+    std::vector<std::pair<std::uint64_t, std::array<double, 3>>> keyed;
+    keyed.reserve(samples.size());
+    for(const auto& p : samples)
+    {
+      const std::array<double, 3> x{{CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])}};
+      keyed.emplace_back(key(cell(x[0]), cell(x[1]), cell(x[2])), x);
+    }
+    std::sort(keyed.begin(), keyed.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(const auto& k : keyed)
+    {
+      if(m_keys.empty() || m_keys.back() != k.first)
+      {
+        m_keys.push_back(k.first);
+        m_begin.push_back(m_points.size());
+      }
+      m_points.push_back(k.second);
+    }
+    m_begin.push_back(m_points.size());
+  }
+
+  /// Whether some sample is within h of `p`.
+  template <typename Point>
+  bool near(const Point& p) const
+  {
+    const double x[3] = {CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])};
+    const std::int64_t c[3] = {cell(x[0]), cell(x[1]), cell(x[2])};
+    const double h2 = m_h * m_h;
+    for(std::int64_t dz = -1; dz <= 1; ++dz)
+      for(std::int64_t dy = -1; dy <= 1; ++dy)
+        for(std::int64_t dx = -1; dx <= 1; ++dx)
+        {
+          const auto found = std::lower_bound(m_keys.begin(), m_keys.end(), key(c[0] + dx, c[1] + dy, c[2] + dz));
+          if(found == m_keys.end() || *found != key(c[0] + dx, c[1] + dy, c[2] + dz))
+            continue;
+          const std::size_t b = std::size_t(found - m_keys.begin());
+          for(std::size_t i = m_begin[b]; i < m_begin[b + 1]; ++i)
+          {
+            const double d0 = m_points[i][0] - x[0], d1 = m_points[i][1] - x[1], d2 = m_points[i][2] - x[2];
+            if(d0 * d0 + d1 * d1 + d2 * d2 <= h2)
+              return true;
+          }
+        }
+    return false;
+  }
+
+private:
+  std::int64_t cell(double x) const { return std::int64_t(std::floor(x / m_h)); }
+  static std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k)
+  {
+    // 21 bits per axis, wrapping: distinct cells may share a key, which only
+    // adds samples to look at (the distance test is exact).
+    const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
+    return (std::uint64_t(i) & mask) | ((std::uint64_t(j) & mask) << 21) | ((std::uint64_t(k) & mask) << 42);
+  }
+
+  double m_h;
+  std::vector<std::uint64_t> m_keys;
+  std::vector<std::size_t> m_begin;
+  std::vector<std::array<double, 3>> m_points;
+};
+
+/// Removes membranes: on the triangles appended from `first_triangle` on
+/// (vertices from `first_vertex` on), a face is *unwitnessed* when one of its
+/// vertices is farther than `witness_distance` from every sample
+/// (`distance_to_samples(point)`).  Each edge-connected set of unwitnessed
+/// faces that reaches farther than `max_gap` from the samples spans an
+/// opening of the sample wider than 2 `max_gap` (the rim of an open scan)
+/// and is removed; smaller ones close gaps and stay.  So is one that
+/// reaches a border of the soup (the lattice border).  Then, at every vertex
+/// whose remaining faces form several fans (two cut regions touching at a
+/// vertex), all fans but the largest are removed, until each vertex has one
+/// fan: the cut leaves an oriented 2-manifold whose border loops are simple.
+/// Returns the number of removed membranes.
+template <typename PointOutRange, typename TriangleRange, typename SampleRange, typename Distance>
+std::size_t remove_unwitnessed_membranes(PointOutRange& points, TriangleRange& triangles, std::size_t first_vertex,
+                                         std::size_t first_triangle, const SampleRange& samples,
+                                         const Distance& distance_to_samples, double witness_distance, double max_gap)
+{
+  const std::size_t nv = points.size() - first_vertex;
+  const std::size_t nt = triangles.size() - first_triangle;
+  if(!(witness_distance > 0))
+    return 0;
+  const Sample_grid grid(samples, witness_distance);
+  std::vector<double> distance(nv, 0);
+  std::vector<char> far(nv, 0);
+  bool any = false;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    far[v] = !grid.near(points[first_vertex + v]);
+    if(far[v])
+      distance[v] = distance_to_samples(points[first_vertex + v]);
+    any = any || far[v];
+  }
+  if(!any)
+    return 0;
+  std::vector<char> removed(nt, 0);
+  std::vector<char> unwitnessed(nt, 0);
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int i = 0; i < 3; ++i)
+      unwitnessed[t] = unwitnessed[t] || far[std::size_t(triangles[first_triangle + t][i]) - first_vertex];
+  const Vertex_faces around(triangles, first_vertex, first_triangle, nv, removed);
+  auto vertex = [&](std::size_t t, int i) { return std::size_t(triangles[first_triangle + t][i]) - first_vertex; };
+  auto shares_edge = [&](std::size_t a, std::size_t b) {
+    int common = 0;
+    for(int i = 0; i < 3; ++i)
+      for(int j = 0; j < 3; ++j)
+        common += vertex(a, i) == vertex(b, j);
+    return common >= 2;
+  };
+  // Faces with an edge in no other face (the lattice border cut the surface).
+  auto is_border_face = [&](std::size_t t) {
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t a = vertex(t, i), b = vertex(t, (i + 1) % 3);
+      std::size_t count = 0;
+      for(std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
+        for(int j = 0; j < 3; ++j)
+          count += vertex(around.faces[k], j) == b;
+      if(count < 2)
+        return true;
+    }
+    return false;
+  };
+  // Edge-connected components of the unwitnessed faces (faces sharing an
+  // edge share a vertex: look among the faces around each vertex).
+  std::vector<std::size_t> component(nt, std::size_t(-1));
+  std::vector<std::size_t> stack, members;
+  std::size_t membranes = 0;
+  for(std::size_t seed = 0; seed < nt; ++seed)
+  {
+    if(!unwitnessed[seed] || component[seed] != std::size_t(-1))
+      continue;
+    members.clear();
+    double reach = 0;
+    bool open = false;
+    component[seed] = seed;
+    stack.push_back(seed);
+    while(!stack.empty())
+    {
+      const std::size_t t = stack.back();
+      stack.pop_back();
+      members.push_back(t);
+      open = open || is_border_face(t);
+      for(int i = 0; i < 3; ++i)
+      {
+        const std::size_t v = vertex(t, i);
+        reach = (std::max)(reach, distance[v]);
+        for(std::size_t a = around.begin[v]; a < around.begin[v + 1]; ++a)
+        {
+          const std::size_t u = around.faces[a];
+          if(unwitnessed[u] && component[u] == std::size_t(-1) && shares_edge(t, u))
+          {
+            component[u] = seed;
+            stack.push_back(u);
+          }
+        }
+      }
+    }
+    if(reach > max_gap || open)
+    {
+      ++membranes;
+      for(const std::size_t t : members)
+        removed[t] = 1;
+    }
+  }
+  if(membranes == 0)
+    return 0;
+  // One fan per vertex.  Fans: the faces around v connected through edges at v.
+  std::vector<std::size_t> queue;
+  for(std::size_t v = 0; v < nv; ++v)
+    queue.push_back(v);
+  std::vector<std::size_t> local, fan;
+  while(!queue.empty())
+  {
+    const std::size_t v = queue.back();
+    queue.pop_back();
+    local.clear();
+    for(std::size_t a = around.begin[v]; a < around.begin[v + 1]; ++a)
+      if(!removed[around.faces[a]])
+        local.push_back(around.faces[a]);
+    if(local.size() < 2)
+      continue;
+    fan.assign(local.size(), std::size_t(-1));
+    std::size_t fans = 0;
+    std::vector<std::size_t> size;
+    for(std::size_t s = 0; s < local.size(); ++s)
+    {
+      if(fan[s] != std::size_t(-1))
+        continue;
+      fan[s] = fans;
+      size.push_back(0);
+      stack.assign(1, s);
+      while(!stack.empty())
+      {
+        const std::size_t x = stack.back();
+        stack.pop_back();
+        ++size[fans];
+        for(std::size_t y = 0; y < local.size(); ++y)
+          if(fan[y] == std::size_t(-1) && shares_edge(local[x], local[y]))
+          {
+            fan[y] = fans;
+            stack.push_back(y);
+          }
+      }
+      ++fans;
+    }
+    if(fans < 2)
+      continue;
+    const std::size_t keep = std::size_t(std::max_element(size.begin(), size.end()) - size.begin());
+    for(std::size_t s = 0; s < local.size(); ++s)
+      if(fan[s] != keep)
+      {
+        removed[local[s]] = 1;
+        for(int i = 0; i < 3; ++i)
+          if(vertex(local[s], i) != v)
+            queue.push_back(vertex(local[s], i));
+      }
+  }
+  // Compact, keeping the order of what stays.
+  std::vector<std::size_t> new_index(nv, std::size_t(-1));
+  std::vector<typename PointOutRange::value_type> kept_points;
+  std::vector<typename TriangleRange::value_type> kept_triangles;
+  for(std::size_t t = 0; t < nt; ++t)
+    if(!removed[t])
+    {
+      std::array<std::size_t, 3> tri;
+      for(int i = 0; i < 3; ++i)
+      {
+        const std::size_t v = vertex(t, i);
+        if(new_index[v] == std::size_t(-1))
+        {
+          new_index[v] = first_vertex + kept_points.size();
+          kept_points.push_back(points[first_vertex + v]);
+        }
+        tri[std::size_t(i)] = new_index[v];
+      }
+      kept_triangles.push_back(typename TriangleRange::value_type{tri[0], tri[1], tri[2]});
+    }
+  points.erase(points.begin() + std::ptrdiff_t(first_vertex), points.end());
+  points.insert(points.end(), kept_points.begin(), kept_points.end());
+  triangles.erase(triangles.begin() + std::ptrdiff_t(first_triangle), triangles.end());
+  triangles.insert(triangles.end(), kept_triangles.begin(), kept_triangles.end());
+  return membranes;
+}
+
 } // namespace internal
 
 } // namespace Boolean_isosurfacing
