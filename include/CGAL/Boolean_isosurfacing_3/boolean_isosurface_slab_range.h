@@ -603,12 +603,17 @@ void extract_boolean_isosurface_slab_range(const Tetrahedral_grid_3<GeomTraits>&
 /// size of the range: `extract_boolean_isosurface_distributed()` streams to
 /// a temporary file and renumbers while it copies to the output.
 ///
+/// \param grid the whole regular grid
+/// \param source the fields, a model of `ScalarFieldSource`
+/// \param expression the Boolean expression of the fields
+/// \param first_layer, last_layer the cube layers of the range
 /// \param message_from_below null, or the `top_layer_message()` of the range
 ///        just below (as the second overload of `extract_boolean_isosurface_slab_range()`)
 /// \param sink receives the surface, a model of `BooleanIsosurfaceSink`
+/// \param range the counts and the boundary layers' vertices (overwritten)
+/// \param np the named parameters of `extract_boolean_isosurface_slab_range()`
 ///
-/// The other parameters, the named parameters and the exceptions are those of
-/// `extract_boolean_isosurface_slab_range()`.  If the result
+/// The exceptions are those of `extract_boolean_isosurface_slab_range()`.  If the result
 /// `depends_on_below`, what went to `sink` must be discarded and the range
 /// streamed again with the message.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename GeomTraits, typename FieldSource, typename Sink,
