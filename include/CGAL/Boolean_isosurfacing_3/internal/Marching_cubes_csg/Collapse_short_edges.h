@@ -66,26 +66,53 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
     return 0;
   std::sort(candidates.begin(), candidates.end());
 
-  // Incident triangles of each vertex (compressed rows).
+  // Incident triangles of the candidates' ends (compressed rows): only their
+  // stars are read, and rows for every vertex were 32 bytes a triangle.
   const std::size_t nv = points.size();
-  std::vector<std::size_t> first(nv + 1, 0);
+  std::vector<std::size_t> ends;
+  ends.reserve(2 * candidates.size());
+  for(const Edge& e : candidates)
+    ends.insert(ends.end(), e.begin(), e.end());
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  // The row of each end (none for the other vertices).
+  const std::uint32_t no_row = std::uint32_t(-1);
+  std::vector<std::uint32_t> row_of;
+  const bool small_rows = ends.size() < no_row;
+  if(small_rows)
+  {
+    row_of.assign(nv, no_row);
+    for(std::size_t r = 0; r < ends.size(); ++r)
+      row_of[ends[r]] = std::uint32_t(r);
+  }
+  const auto row = [&](std::size_t v) {
+    return small_rows ? std::size_t(row_of[v])
+                      : std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin());
+  };
+  std::vector<unsigned char> touched(nv, 0), deleted(triangles.size(), 0);
+  for(std::size_t v : ends)
+    touched[v] = 3; // an end (cleared below)
+  std::vector<std::size_t> first(ends.size() + 1, 0);
   for(const auto& t : triangles)
     for(std::size_t v : t)
-      ++first[v + 1];
-  for(std::size_t v = 0; v < nv; ++v)
-    first[v + 1] += first[v];
-  std::vector<std::size_t> incident(first[nv]);
+      if(touched[v] == 3)
+        ++first[row(v) + 1];
+  for(std::size_t r = 0; r < ends.size(); ++r)
+    first[r + 1] += first[r];
+  std::vector<std::size_t> incident(first.back());
   {
     std::vector<std::size_t> fill(first.begin(), first.end() - 1);
     for(std::size_t t = 0; t < triangles.size(); ++t)
       for(std::size_t v : triangles[t])
-        incident[fill[v]++] = t;
+        if(touched[v] == 3)
+          incident[fill[row(v)]++] = t;
   }
-  std::vector<unsigned char> touched(nv, 0), deleted(triangles.size(), 0);
+  for(std::size_t v : ends)
+    touched[v] = 0;
   std::vector<std::size_t> neighbours_u, neighbours_v, common;
-  const auto neighbours = [&](std::size_t v, std::vector<std::size_t>& out) {
+  const auto neighbours = [&](std::size_t r, std::size_t v, std::vector<std::size_t>& out) {
     out.clear();
-    for(std::size_t e = first[v]; e < first[v + 1]; ++e)
+    for(std::size_t e = first[r]; e < first[r + 1]; ++e)
       if(!deleted[incident[e]])
         for(std::size_t w : triangles[incident[e]])
           if(w != v)
@@ -99,10 +126,11 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
     const std::size_t keep = e[0], gone = e[1];
     if(touched[keep] || touched[gone])
       continue;
+    const std::size_t row_keep = row(keep), row_gone = row(gone);
     // The two triangles of the edge, and the link condition.
     std::array<std::size_t, 2> edge_triangles{{0, 0}}, opposite{{0, 0}};
     int found = 0;
-    for(std::size_t x = first[gone]; x < first[gone + 1]; ++x)
+    for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
     {
       const std::size_t t = incident[x];
       if(deleted[t])
@@ -122,8 +150,8 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
     }
     if(found != 2 || opposite[0] == opposite[1])
       continue;
-    neighbours(gone, neighbours_u);
-    neighbours(keep, neighbours_v);
+    neighbours(row_gone, gone, neighbours_u);
+    neighbours(row_keep, keep, neighbours_v);
     common.clear();
     std::set_intersection(neighbours_u.begin(), neighbours_u.end(), neighbours_v.begin(), neighbours_v.end(),
                           std::back_inserter(common));
@@ -131,7 +159,7 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
       continue;
     // The triangles of `gone` that move must keep their orientation.
     bool ok = true;
-    for(std::size_t x = first[gone]; x < first[gone + 1] && ok; ++x)
+    for(std::size_t x = first[row_gone]; x < first[row_gone + 1] && ok; ++x)
     {
       const std::size_t t = incident[x];
       if(deleted[t] || t == edge_triangles[0] || t == edge_triangles[1])
@@ -151,7 +179,7 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
     }
     if(!ok)
       continue;
-    for(std::size_t x = first[gone]; x < first[gone + 1]; ++x)
+    for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
       for(std::size_t& w : triangles[incident[x]])
         if(w == gone)
           w = keep;
