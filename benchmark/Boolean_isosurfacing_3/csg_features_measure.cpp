@@ -888,7 +888,7 @@ int main(int argc, char** argv)
       m.method = features ? "features" : "plain MC";
       BI::Marching_cubes_csg_statistics s;
       const Soup soup = run_ours(meshes, c.op, lattice, features, m.seconds, s);
-      const double thin = s.result_line_volume > 0 ? 100 * s.thin_result_volume / s.result_line_volume : 0;
+      const double thin = 100 * s.thin_result_fraction();
       if(features)
       {
         char note[128];

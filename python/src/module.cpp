@@ -245,6 +245,12 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
   }
   info["checked_components"] = statistics.checked_components;
   info["under_resolved_components"] = unresolved;
+  // The result's own walls or gaps thinner than a cell (see the C++ statistics).
+  info["result_intervals"] = statistics.result_intervals;
+  info["thin_result_intervals"] = statistics.thin_result_intervals;
+  info["thin_result_fraction"] = statistics.thin_result_fraction();
+  info["thin_result_suggested_spacing"] = statistics.thin_result_suggested_spacing;
+  info["warnings"] = statistics.warnings;
   info["seconds_classification"] = statistics.seconds_classification;
   info["seconds_edges"] = statistics.seconds_edges;
   info["seconds_triangulation"] = statistics.seconds_triangulation;
@@ -703,8 +709,11 @@ Returns (V, F, info): V (k, 3) float64, F (t, 3) int64 outward triangles,
 closed and 2-manifold when info["closed"]; info holds the lattice, the
 crossings, the sharp-feature counts, info["under_resolved_components"] (input
 components with no lattice point inside or a lattice volume off by more
-than a factor 2: they may be missing from the output) and the time of each
-stage.  The GIL is released while it runs.)doc");
+than a factor 2: they may be missing from the output), the result's own
+thin walls or gaps (info["thin_result_fraction"] of its line volume in
+intervals of lattice lines that hold no lattice point, and a spacing that
+would see them), info["warnings"] (one line per missing guarantee) and the
+time of each stage.  The GIL is released while it runs.)doc");
 
   m.def("contour", &contour_py, "points"_a, "normals"_a = py::none(), "cell_size"_a = py::none(),
         "cells"_a = py::none(), "k"_a = 15, "rho"_a = py::none(), "delta"_a = py::none(), "max_jump"_a = py::none(),

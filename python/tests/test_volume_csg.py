@@ -133,6 +133,20 @@ def test_csg_reports_a_slab_thinner_than_the_spacing():
     assert bi.surveyor_volume(V2, F2) == pytest.approx(1.02, rel=1e-3)
 
 
+def test_csg_warns_about_a_difference_thinner_than_the_spacing():
+    # A box minus a box 0.02 smaller on every side: a shell 0.02 thick, which
+    # a lattice of spacing ~1/16 cannot see, though each box alone is resolved.
+    outer, inner = cube_mesh(), cube_mesh((0.02, 0.02, 0.02), (0.98, 0.98, 0.98))
+    V, F, info = bi.csg([outer, inner], "difference", cells=16)
+    assert info["under_resolved_components"] == []
+    assert info["thin_result_fraction"] > 0.5
+    assert 0 < info["thin_result_suggested_spacing"] < info["spacing"]
+    assert any("thinner than a cell" in w for w in info["warnings"])
+    V2, F2, info2 = bi.csg([outer, inner], "difference", cells=128)
+    assert info2["thin_result_fraction"] == 0 and info2["warnings"] == []
+    assert bi.surveyor_volume(V2, F2) == pytest.approx(1 - 0.96 ** 3, rel=0.05)
+
+
 def test_csg_sphere_volume_converges():
     S = sphere_mesh(rings=64, segments=128)
     mesh_volume = bi.surveyor_volume(*S)

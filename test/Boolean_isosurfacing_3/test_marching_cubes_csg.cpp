@@ -1163,6 +1163,11 @@ TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
   EXPECT_LE(coarse_part, 1 + 1e-12);
   EXPECT_GT(coarse.statistics.thin_result_suggested_spacing, 0);
   EXPECT_LE(coarse.statistics.thin_result_suggested_spacing, 0.01 + 1e-12);
+  // Well above the 2 % the library warns at: one warning says so.
+  EXPECT_TRUE(coarse.statistics.has_thin_result());
+  EXPECT_EQ(std::count_if(coarse.statistics.warnings.begin(), coarse.statistics.warnings.end(),
+                          [](const std::string& w) { return w.find("thinner than a cell") != std::string::npos; }),
+            1);
 
   const Soup fine = run_csg({&outer, &inner}, BI::Boolean_expression::difference(),
                             BI::Regular_lattice_3::enclosing(box, 1.0 / 128));
@@ -1170,6 +1175,8 @@ TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
   EXPECT_EQ(fine.statistics.thin_result_intervals, 0u);
   EXPECT_EQ(fine.statistics.thin_result_volume, 0);
   EXPECT_EQ(fine.statistics.thin_result_suggested_spacing, 0);
+  EXPECT_FALSE(fine.statistics.has_thin_result());
+  EXPECT_TRUE(fine.statistics.warnings.empty());
 
   // Two overlapping boxes: nothing thin, and the line volume is exact along
   // x-lines (box faces between lattice planes).

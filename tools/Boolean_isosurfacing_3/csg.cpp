@@ -318,10 +318,7 @@ double output_volume(const Result& r, bool signed_volume = false)
 
 // The part of the result's volume in intervals of lattice lines that hold no
 // lattice point (walls or gaps thinner than a cell), in percent.
-double thin_result_percent(const BI::Marching_cubes_csg_statistics& s)
-{
-  return s.result_line_volume > 0 ? 100 * s.thin_result_volume / s.result_line_volume : 0;
-}
+double thin_result_percent(const BI::Marching_cubes_csg_statistics& s) { return 100 * s.thin_result_fraction(); }
 
 void print_result(std::FILE* out, const Result& r)
 {
@@ -442,13 +439,11 @@ std::size_t resolution_warnings(Tool& tool, const Result& r, const Options& opti
                        "is empty or the lattice is too coarse to see it");
   }
   // Thin walls or gaps of the result itself (a difference of nearly
-  // coincident solids), which the component check cannot see.  Above 2 %
-  // the output is visibly wrong (hull-body - hull-mask: 8 % thin at 128
-  // cells, 40 % of the volume lost); lines grazing a smooth surface give
-  // about 1 % at 16-32 cells.  Not repeated when input components were
-  // named already (their --cells suffices).
+  // coincident solids), which the component check cannot see; the library
+  // decides when they are worth a warning.  Not repeated when input
+  // components were named already (their --cells suffices).
   const BI::Marching_cubes_csg_statistics& s = r.statistics;
-  if(count == 0 && thin_result_percent(s) > 2 && s.thin_result_suggested_spacing > 0)
+  if(count == 0 && s.has_thin_result())
   {
     ++count;
     char text[512];

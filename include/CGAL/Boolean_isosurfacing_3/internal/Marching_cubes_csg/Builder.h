@@ -862,6 +862,12 @@ inline void add_csg_warnings(Marching_cubes_csg_statistics& statistics)
   for(const Marching_cubes_csg_component_report& c : statistics.under_resolved_components)
     statistics.warnings.push_back("component " + std::to_string(c.component) + " of mesh #" +
                                   std::to_string(c.mesh) + " is not resolved by the lattice");
+  if(statistics.under_resolved_components.empty() && statistics.has_thin_result())
+    statistics.warnings.push_back(std::to_string(statistics.thin_result_intervals) + " of " +
+                                  std::to_string(statistics.result_intervals) +
+                                  " intervals of lattice lines through the result hold no lattice point: "
+                                  "walls or gaps thinner than a cell are missing or filled in; a spacing of " +
+                                  std::to_string(statistics.thin_result_suggested_spacing) + " would see most");
 }
 
 // The named parameters `sharp_features` (default true) and `feature_angle`
