@@ -70,31 +70,9 @@ const double pi = 3.14159265358979323846;
 
 Mesh make_box(const Point& low, const Point& high) { return BI::test::make_box<Mesh>(low, high); }
 
-// A prism with a regular `segments`-gon as section, axis along z.
 Mesh make_cylinder(const Point& base, double radius, double height, int segments)
 {
-  std::vector<Point> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  for(int s = 0; s < segments; ++s)
-  {
-    const double a = 2 * pi * s / segments;
-    points.emplace_back(base.x() + radius * std::cos(a), base.y() + radius * std::sin(a), base.z());
-    points.emplace_back(base.x() + radius * std::cos(a), base.y() + radius * std::sin(a), base.z() + height);
-  }
-  const std::size_t bottom = points.size(), top = bottom + 1;
-  points.push_back(base);
-  points.emplace_back(base.x(), base.y(), base.z() + height);
-  for(int s = 0; s < segments; ++s)
-  {
-    const std::size_t b0 = 2 * s, t0 = 2 * s + 1, b1 = 2 * ((s + 1) % segments), t1 = b1 + 1;
-    triangles.push_back({{b0, b1, t1}});
-    triangles.push_back({{b0, t1, t0}});
-    triangles.push_back({{bottom, b1, b0}});
-    triangles.push_back({{top, t0, t1}});
-  }
-  Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
-  return mesh;
+  return BI::test::make_cylinder<Mesh>(base, radius, height, segments);
 }
 
 Mesh rotated(const Mesh& mesh, const Point& centre, const Vector& axis, double angle)

@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,9 +21,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Boolean_isosurfacing {
@@ -59,6 +62,36 @@ Mesh make_box(const Point& low, const Point& high)
                         Point(low.x(), high.y(), high.z()), Point(low.x(), low.y(), high.z()),
                         Point(high.x(), low.y(), high.z()), Point(high.x(), high.y(), high.z()), mesh);
   CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+  return mesh;
+}
+
+/// A prism on a regular `segments`-gon of circumradius `radius`, axis along
+/// z from `base` up `height`, triangulated (4 `segments` triangles, outward).
+template <typename Mesh, typename Point>
+Mesh make_cylinder(const Point& base, double radius, double height, int segments)
+{
+  const double pi = 3.14159265358979323846;
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for(int s = 0; s < segments; ++s)
+  {
+    const double a = 2 * pi * s / segments;
+    points.emplace_back(base.x() + radius * std::cos(a), base.y() + radius * std::sin(a), base.z());
+    points.emplace_back(base.x() + radius * std::cos(a), base.y() + radius * std::sin(a), base.z() + height);
+  }
+  const std::size_t bottom = points.size(), top = bottom + 1;
+  points.push_back(base);
+  points.emplace_back(base.x(), base.y(), base.z() + height);
+  for(int s = 0; s < segments; ++s)
+  {
+    const std::size_t b0 = 2 * s, t0 = 2 * s + 1, b1 = 2 * ((s + 1) % segments), t1 = b1 + 1;
+    triangles.push_back({{b0, b1, t1}});
+    triangles.push_back({{b0, t1, t0}});
+    triangles.push_back({{bottom, b1, b0}});
+    triangles.push_back({{top, t0, t1}});
+  }
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   return mesh;
 }
 
