@@ -250,6 +250,8 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
   info["thin_result_intervals"] = statistics.thin_result_intervals;
   info["thin_result_fraction"] = statistics.thin_result_fraction();
   info["thin_result_suggested_spacing"] = statistics.thin_result_suggested_spacing;
+  info["sparse_result_fraction"] = statistics.sparse_result_fraction;
+  info["sparse_result_suggested_spacing"] = statistics.sparse_result_suggested_spacing;
   info["warnings"] = statistics.warnings;
   info["seconds_classification"] = statistics.seconds_classification;
   info["seconds_edges"] = statistics.seconds_edges;
@@ -712,7 +714,8 @@ components with no lattice point inside or a lattice volume off by more
 than a factor 2: they may be missing from the output), the result's own
 thin walls or gaps (info["thin_result_fraction"] of its line volume in
 intervals of lattice lines that hold no lattice point, and a spacing that
-would see them), info["warnings"] (one line per missing guarantee) and the
+would see them; info["sparse_result_fraction"] likewise for intervals that
+hold fewer than two), info["warnings"] (one line per missing guarantee) and the
 time of each stage.  The GIL is released while it runs.)doc");
 
   m.def("contour", &contour_py, "points"_a, "normals"_a = py::none(), "cell_size"_a = py::none(),

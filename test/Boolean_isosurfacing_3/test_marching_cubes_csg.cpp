@@ -1194,6 +1194,43 @@ TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
   EXPECT_EQ(off.result_intervals, 0u);
 }
 
+// Walls one lattice point thick: a ball minus a ball 0.04 smaller in radius
+// at spacing 0.04 / 1.1.  Nearly every interval through the shell holds one
+// or two lattice points (none is empty), yet the table joins the points of
+// an oblique wall only through some cube faces, so the shell comes out in
+// pieces; the sparse measure sees it along every axis.  At spacing 0.01 the
+// shell holds at least 4 points across.
+TEST(McCsgResolution, ShellOnePointThickIsReportedAsSparse)
+{
+  const Mesh outer = make_sphere(Point(0.013, -0.021, 0.007), 1.0, 4);
+  const Mesh inner = make_sphere(Point(0.013, -0.021, 0.007), 0.96, 4);
+  const double exact = BI::test::exact_volume(outer) - BI::test::exact_volume(inner);
+  const CGAL::Bbox_3 box = PMP::bbox(outer);
+  const Soup coarse = run_csg({&outer, &inner}, BI::Boolean_expression::difference(),
+                              BI::Regular_lattice_3::enclosing(box, 0.04 / 1.1));
+  const double coarse_volume = check_output(coarse, "coarse shell", false);
+  std::cout << "shell at 0.04/1.1: sparse " << 100 * coarse.statistics.sparse_result_fraction << " %, thin "
+            << 100 * coarse.statistics.thin_result_fraction() << " %, volume error "
+            << 100 * (coarse_volume - exact) / exact << " %, suggested spacing "
+            << coarse.statistics.sparse_result_suggested_spacing << "\n";
+  EXPECT_FALSE(coarse.statistics.has_thin_result());
+  EXPECT_TRUE(coarse.statistics.has_sparse_result());
+  EXPECT_LT(coarse_volume, 0.97 * exact) << "pieces of the shell are missing";
+  EXPECT_GT(coarse.statistics.sparse_result_suggested_spacing, 0);
+  EXPECT_LT(coarse.statistics.sparse_result_suggested_spacing, 0.04 / 1.1);
+  EXPECT_EQ(std::count_if(coarse.statistics.warnings.begin(), coarse.statistics.warnings.end(),
+                          [](const std::string& w) { return w.find("at most one lattice point") != std::string::npos; }),
+            1);
+
+  const Soup fine = run_csg({&outer, &inner}, BI::Boolean_expression::difference(),
+                            BI::Regular_lattice_3::enclosing(box, 0.01));
+  const double fine_volume = check_output(fine, "fine shell", false);
+  EXPECT_LT(fine.statistics.sparse_result_fraction, 0.01);
+  EXPECT_FALSE(fine.statistics.has_sparse_result());
+  EXPECT_TRUE(fine.statistics.warnings.empty());
+  EXPECT_NEAR(fine_volume, exact, 0.005 * exact);
+}
+
 
 template <typename Exception>
 void expect_error(const std::function<void()>& f, const std::string& fragment)

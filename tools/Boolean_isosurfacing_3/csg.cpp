@@ -337,9 +337,10 @@ void print_result(std::FILE* out, const Result& r)
                  s.plain_feature_polygons, s.collapsed_edges);
   std::fprintf(out,
                "  resolution check: %zu input components, %zu not resolved by the lattice; %zu of %zu result "
-               "intervals on lattice lines thinner than a cell (%.3g %% of the volume)\n",
+               "intervals on lattice lines thinner than a cell (%.3g %% of the volume), %.3g %% in walls "
+               "or gaps under two cells\n",
                s.checked_components, s.under_resolved_components.size(), s.thin_result_intervals,
-               s.result_intervals, thin_result_percent(s));
+               s.result_intervals, thin_result_percent(s), 100 * s.sparse_result_fraction);
 }
 
 // The stages the library timed, as progress lines, and the JSON members
@@ -367,6 +368,7 @@ void report_result(Tool& tool, const Result& r)
   j.set("unresolved_components", s.under_resolved_components.size());
   j.set("thin_result_intervals", s.thin_result_intervals);
   j.set("thin_result_percent", thin_result_percent(s));
+  j.set("sparse_result_percent", 100 * s.sparse_result_fraction);
 }
 
 // One warning (or, with --strict, error) line.
@@ -453,6 +455,17 @@ std::size_t resolution_warnings(Tool& tool, const Result& r, const Options& opti
                   "--cells %.0f (spacing %.6g) would see most of them",
                   s.thin_result_intervals, s.result_intervals, thin_result_percent(s),
                   std::ceil(longest / s.thin_result_suggested_spacing), s.thin_result_suggested_spacing);
+    resolution_problem(tool, options, text);
+  }
+  else if(count == 0 && s.has_sparse_result())
+  {
+    ++count;
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "%.3g %% of the result lies in walls or gaps that hold at most one lattice point across: "
+                  "Marching Cubes may break them into pieces; --cells %.0f (spacing %.6g) would see most of them",
+                  100 * s.sparse_result_fraction, std::ceil(longest / s.sparse_result_suggested_spacing),
+                  s.sparse_result_suggested_spacing);
     resolution_problem(tool, options, text);
   }
   return count;

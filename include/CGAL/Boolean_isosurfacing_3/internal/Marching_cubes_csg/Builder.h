@@ -868,6 +868,11 @@ inline void add_csg_warnings(Marching_cubes_csg_statistics& statistics)
                                   " intervals of lattice lines through the result hold no lattice point: "
                                   "walls or gaps thinner than a cell are missing or filled in; a spacing of " +
                                   std::to_string(statistics.thin_result_suggested_spacing) + " would see most");
+  else if(statistics.under_resolved_components.empty() && statistics.has_sparse_result())
+    statistics.warnings.push_back(std::to_string(100 * statistics.sparse_result_fraction) +
+                                  " % of the result lies in walls or gaps that hold at most one lattice point "
+                                  "across: Marching Cubes may break them into pieces; a spacing of " +
+                                  std::to_string(statistics.sparse_result_suggested_spacing) + " would see most");
 }
 
 // The named parameters `sharp_features` (default true) and `feature_angle`
@@ -938,12 +943,14 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   {
     statistics.checked_components = Marching_cubes_csg::under_resolved_components(
         components, classifier, statistics.under_resolved_components);
-    const Marching_cubes_csg::Thin_result_measure thin = Marching_cubes_csg::measure_thin_result(classifier, expression);
+    const Marching_cubes_csg::Thin_result_measure thin = Marching_cubes_csg::measure_thin_result(classifier, expression, components);
     statistics.result_intervals = thin.intervals;
     statistics.thin_result_intervals = thin.thin_intervals;
     statistics.thin_result_volume = thin.thin_volume;
     statistics.result_line_volume = thin.line_volume;
     statistics.thin_result_suggested_spacing = 0.5 * thin.median_thin_length;
+    statistics.sparse_result_fraction = thin.sparse_fraction;
+    statistics.sparse_result_suggested_spacing = 0.5 * thin.median_sparse_length;
   }
   const double seconds_yz = classifier.seconds(1) + classifier.seconds(2);
   statistics.seconds_classification = seconds_since(start) - seconds_yz;
