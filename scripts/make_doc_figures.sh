@@ -132,12 +132,22 @@ EOF
 
 # ---- Marching Cubes CSG: CAD-like and organic pairs --------------------------
 echo "== csg: plate minus pin (CAD-like pair)"
-"$tools/csg" "$work/plate.off" "$work/pin.off" --op difference --cells 96 -o "$work/plate_minus_pin.off"
-render "$work/plate_minus_pin.off" "$work/cad.png" --view 35,-60 --size 4 --zoom 1.4
+"$tools/csg" "$work/plate.off" "$work/pin.off" --op difference --cells 96 -o "$work/plate_minus_pin.off" \
+  --creases "$work/plate_minus_pin_creases.txt" --corners "$work/plate_minus_pin_corners.xyz"
+render "$work/plate_minus_pin.off" "$work/cad.png" --view 35,-60 --size 4 --zoom 1.4 \
+  --creases "$work/plate_minus_pin_creases.txt" --corners "$work/plate_minus_pin_corners.xyz"
 echo "== csg: the built-in sphere and torus (organic pair)"
+# --demo writes the pair and prints the exact volumes; the figure's meshes are
+# the same operations run again with their creases and corners written.
 "$tools/csg" --demo "$work/organic" --cells 96
-render "$work/organic/difference.off" "$work/organic_difference.png" --view 25,-15 --size 4 --zoom 1.3
-render "$work/organic/union.off" "$work/organic_union.png" --view 30,-70 --size 4 --zoom 1.3
+for op in union difference; do
+  "$tools/csg" "$work/organic/A_sphere.off" "$work/organic/B_torus.off" --op $op --cells 96 \
+    -o "$work/organic_$op.off" --creases "$work/organic_${op}_creases.txt" --corners "$work/organic_${op}_corners.xyz"
+done
+render "$work/organic_difference.off" "$work/organic_difference.png" --view 25,-15 --size 4 --zoom 1.3 \
+  --creases "$work/organic_difference_creases.txt" --corners "$work/organic_difference_corners.xyz"
+render "$work/organic_union.off" "$work/organic_union.png" --view 30,-70 --size 4 --zoom 1.3 \
+  --creases "$work/organic_union_creases.txt" --corners "$work/organic_union_corners.xyz"
 side_by_side "$fig/csg_pairs.png" \
   "$work/cad.png" "plate & !pin (96 cells)" \
   "$work/organic_union.png" "sphere | torus" \
