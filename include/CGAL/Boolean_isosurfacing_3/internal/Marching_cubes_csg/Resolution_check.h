@@ -345,9 +345,9 @@ inline Thin_result_measure measure_thin_result(const Lattice_classifier_3& class
               thin_volume[axis] += (c.position - change_position) * area;
               thin_lengths.push_back(c.position - change_position);
             }
-            const bool between_perpendicular_faces = (labels.perpendicular_axes[c.triangle] & axis_bit) != 0 &&
-                                                     (labels.perpendicular_axes[change_triangle] & axis_bit) != 0;
-            if(c.index <= change_index + 1 && !between_perpendicular_faces)
+            // The triangles' flags are read only for the few short intervals.
+            if(c.index <= change_index + 1 && ((labels.perpendicular_axes[c.triangle] & axis_bit) == 0 ||
+                                               (labels.perpendicular_axes[change_triangle] & axis_bit) == 0))
             {
               sparse_volume[axis] += (c.position - change_position) * area;
               sparse_lengths.push_back(c.position - change_position);
