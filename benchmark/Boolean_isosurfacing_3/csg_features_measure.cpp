@@ -145,16 +145,6 @@ Mesh moved(const Mesh& mesh, const Point& c, const Vector& axis, double angle, c
   return copy;
 }
 
-// The copy of issue 17: rotated by 10 degrees about (1, 2, 3) through the
-// box centre and moved by (0.137, 0.091, 0.063) times the box's longest side.
-Mesh moved_copy(const Mesh& mesh)
-{
-  const CGAL::Bbox_3 b = PMP::bbox(mesh);
-  const double size = (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
-  const Point c((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2, (b.zmin() + b.zmax()) / 2);
-  return moved(mesh, c, Vector(1, 2, 3), 10 * pi / 180, Vector(0.137 * size, 0.091 * size, 0.063 * size));
-}
-
 Mesh read_mesh(const std::string& path)
 {
   Mesh m;
@@ -218,7 +208,7 @@ std::vector<Case> all_cases(const std::string& data)
       cases.push_back({std::string(name) + op,
                        [path] {
                          const Mesh a = read_mesh(path);
-                         return std::vector<Mesh>{a, moved_copy(a)};
+                         return std::vector<Mesh>{a, BI::test::moved_copy(a)};
                        },
                        op});
     }

@@ -666,6 +666,14 @@ TEST(CsgFeaturesTable, RandomLatticesWithFansAndFlipsStayClosedManifolds)
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(after)) << "trial " << trial;
     EXPECT_EQ(euler(after), euler(plain_mesh)) << "trial " << trial;
     EXPECT_EQ(after.number_of_vertices(), moved_points.size()) << "trial " << trial << ": an unreferenced point";
+    // A valid 2-manifold can still hold two coincident triangles (a collapsed
+    // tetrahedron): the link condition on edges must refuse that.
+    std::set<Tri> vertex_sets;
+    for(Tri t : moved)
+    {
+      std::sort(t.begin(), t.end());
+      EXPECT_TRUE(vertex_sets.insert(t).second) << "trial " << trial << ": two coincident triangles";
+    }
     for(const auto& c : creases)
       EXPECT_TRUE(after.halfedge(Mesh::Vertex_index(Mesh::size_type(c[0])), Mesh::Vertex_index(Mesh::size_type(c[1]))) !=
                   Mesh::null_halfedge())
@@ -674,6 +682,30 @@ TEST(CsgFeaturesTable, RandomLatticesWithFansAndFlipsStayClosedManifolds)
   EXPECT_GT(flips, 1000u);
   EXPECT_GT(fans, 1000u);
   EXPECT_GT(collapses, 1000u);
+}
+
+// A tetrahedron (MC makes such tiny components next to a lattice point) with
+// one short edge between two edge points: both ends see exactly the two other
+// vertices as common neighbours, but collapsing it would leave two coincident
+// triangles of opposite orientation (a self-intersection, seen on bunny_hoppe
+// minus a moved copy at 128 cells).  It must stay a tetrahedron.
+TEST(CsgFeaturesTable, ShortEdgeOfATetrahedronIsNotCollapsed)
+{
+  std::vector<MC::Vector_3d> points{{{0, 0, 0}}, {{0.01, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};
+  std::vector<Tri> triangles{{{0, 2, 1}}, {{0, 1, 3}}, {{0, 3, 2}}, {{1, 2, 3}}};
+  std::vector<std::array<std::size_t, 2>> creases;
+  std::vector<std::size_t> corners;
+  EXPECT_EQ(MC::collapse_short_edges(points, triangles, points.size(), 0.1, creases, corners), 0u);
+  EXPECT_EQ(triangles.size(), 4u);
+  EXPECT_EQ(points.size(), 4u);
+  // The same test must not refuse an ordinary collapse: a short equator edge
+  // of an octahedron (both ends of degree 4, no triangle with both poles).
+  std::vector<MC::Vector_3d> octahedron{{{1, 0, 0}}, {{0.99, 0.1, 0}}, {{-1, 0, 0}}, {{0, -1, 0}}, {{0, 0, 1}}, {{0, 0, -1}}};
+  std::vector<Tri> faces{{{0, 1, 4}}, {{1, 2, 4}}, {{2, 3, 4}}, {{3, 0, 4}},
+                         {{1, 0, 5}}, {{2, 1, 5}}, {{3, 2, 5}}, {{0, 3, 5}}};
+  EXPECT_EQ(MC::collapse_short_edges(octahedron, faces, octahedron.size(), 0.2, creases, corners), 1u);
+  EXPECT_EQ(faces.size(), 6u);
+  EXPECT_EQ(octahedron.size(), 5u);
 }
 
 // The Lawson flips alone, on plain Marching Cubes output (no collapse, no
@@ -955,6 +987,18 @@ TEST(CsgFeatures, SharedPairsGiveClosedManifoldsWithoutSelfIntersections)
     EXPECT_FALSE(twin_run.statistics.under_resolved_components.empty());
   else
     check_valid(twin_run, "Generic_Twin union");
+}
+
+// bunny_hoppe minus its moved copy at 128 cells: the short-edge collapse once
+// turned a tiny tetrahedral component into two coincident triangles there
+// (PMP::does_self_intersect found the pair).
+TEST(CsgFeatures, BunnyMinusMovedCopyDoesNotSelfIntersect)
+{
+  Mesh bunny;
+  BI::IO::read_closed_triangle_mesh(std::string(BISO_SHARED_DATA_DIR) + "/meshes/bunny_hoppe.off", bunny);
+  const Csg_run run = run_csg({bunny, BI::test::moved_copy(bunny)}, "A & !B", 128);
+  check_valid(run, "bunny_hoppe - moved copy");
+  EXPECT_GT(run.statistics.collapsed_edges, 1000u);
 }
 
 

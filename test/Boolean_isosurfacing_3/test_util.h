@@ -10,6 +10,7 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -21,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -93,6 +95,30 @@ Mesh make_cylinder(const Point& base, double radius, double height, int segments
   Mesh mesh;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   return mesh;
+}
+
+/// Issue 17's moved copy of a mesh: rotated by 10 degrees about the axis
+/// (1, 2, 3) through its bounding box centre, then moved by (0.137, 0.091,
+/// 0.063) times the box's longest side.
+template <typename Mesh>
+Mesh moved_copy(const Mesh& mesh)
+{
+  typedef typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  const double pi = 3.14159265358979323846;
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double size = (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
+  const Point c((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2, (b.zmin() + b.zmax()) / 2);
+  const Vector axis(1, 2, 3), t(0.137 * size, 0.091 * size, 0.063 * size);
+  const Vector u = axis / std::sqrt(axis.squared_length());
+  const double co = std::cos(10 * pi / 180), s = std::sin(10 * pi / 180);
+  Mesh copy = mesh;
+  for(auto v : vertices(copy))
+  {
+    const Vector p = get(CGAL::vertex_point, copy, v) - c;
+    put(CGAL::vertex_point, copy, v, c + p * co + CGAL::cross_product(u, p) * s + u * (u * p) * (1 - co) + t);
+  }
+  return copy;
 }
 
 /// The signed distance to the sphere of centre (cx, cy, cz) and radius r (negative inside).

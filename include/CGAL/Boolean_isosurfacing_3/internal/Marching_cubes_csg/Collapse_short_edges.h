@@ -10,11 +10,14 @@
 // Such an edge is collapsed (the higher-numbered point merges into the
 // lower-numbered one, whose position is an exact crossing too) when
 //  - the link condition holds (the two ends have exactly the two opposite
-//    vertices of the edge as common neighbours), so the closed 2-manifold
-//    stays a closed 2-manifold with the same topology;
+//    vertices of the edge as common neighbours, and do not both form a
+//    triangle with them), so the closed 2-manifold stays a closed
+//    2-manifold with the same topology and no two coincident triangles;
 //  - no triangle that moves turns by more than 90 degrees, becomes
 //    degenerate, or becomes a worse sliver than it was (unless it stays
-//    above a quality of 1e-4).
+//    above a quality of 1e-4);
+//  - no two neighbouring triangles fold onto each other (`max_fold_cosine`)
+//    where they did not before.
 // Feature vertices are never moved.  In one pass each vertex takes part in
 // at most one collapse, so the order of the collapses (sorted edges) cannot
 // matter more than one level, and the pass is O(triangles); a few passes
@@ -25,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -37,6 +41,34 @@ namespace Marching_cubes_csg {
 
 /// Passes of `collapse_short_edges()` at most.
 constexpr int max_collapse_passes = 4;
+
+/// A collapse may not create two neighbouring triangles whose normals make
+/// a cosine below this (an interior angle below about 26 degrees) unless the
+/// stars had one already.
+constexpr double max_fold_cosine = -0.9;
+
+/// The smallest cosine between the normals of two triangles of `star` that
+/// share an edge (1 if none do, or if one of them is degenerate).
+inline double most_opposite_neighbours(const std::vector<Vector_3d>& points,
+                                       const std::vector<std::array<std::size_t, 3>>& star)
+{
+  double smallest = 1;
+  for(std::size_t i = 0; i < star.size(); ++i)
+    for(std::size_t j = i + 1; j < star.size(); ++j)
+    {
+      int shared = 0;
+      for(std::size_t v : star[i])
+        shared += int(v == star[j][0] || v == star[j][1] || v == star[j][2]);
+      if(shared != 2)
+        continue;
+      const Vector_3d a = triangle_normal(points[star[i][0]], points[star[i][1]], points[star[i][2]]);
+      const Vector_3d b = triangle_normal(points[star[j][0]], points[star[j][1]], points[star[j][2]]);
+      const double norms = std::sqrt(dot3(a, a) * dot3(b, b));
+      if(norms > 0)
+        smallest = (std::min)(smallest, dot3(a, b) / norms);
+    }
+  return smallest;
+}
 
 /// One pass of `collapse_short_edges()`: each vertex takes part in at most
 /// one collapse.  `first_feature_vertex` is updated with the renumbering, and
@@ -110,6 +142,7 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
   for(std::size_t v : ends)
     touched[v] = 0;
   std::vector<std::size_t> neighbours_u, neighbours_v, common;
+  std::vector<std::array<std::size_t, 3>> star_before, star_after;
   const auto neighbours = [&](std::size_t r, std::size_t v, std::vector<std::size_t>& out) {
     out.clear();
     for(std::size_t e = first[r]; e < first[r + 1]; ++e)
@@ -157,6 +190,21 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
                           std::back_inserter(common));
     if(common.size() != 2)
       continue;
+    // The link condition on edges too: if both ends form a triangle with the
+    // two opposite vertices, the four are a tetrahedron (a tiny component of
+    // its own) and the collapse would leave two coincident triangles.
+    const auto has_triangle_with_opposites = [&](std::size_t r) {
+      for(std::size_t x = first[r]; x < first[r + 1]; ++x)
+      {
+        const auto& tr = triangles[incident[x]];
+        if(!deleted[incident[x]] && std::count(tr.begin(), tr.end(), opposite[0]) == 1 &&
+           std::count(tr.begin(), tr.end(), opposite[1]) == 1)
+          return true;
+      }
+      return false;
+    };
+    if(has_triangle_with_opposites(row_gone) && has_triangle_with_opposites(row_keep))
+      continue;
     // The triangles of `gone` that move must keep their orientation.
     bool ok = true;
     for(std::size_t x = first[row_gone]; x < first[row_gone + 1] && ok; ++x)
@@ -178,6 +226,33 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
            q1 > degenerate_quality;
     }
     if(!ok)
+      continue;
+    // No new fold: two triangles of the new star across an edge must not
+    // face (nearly) opposite ways unless the stars already had such a pair.
+    // Squashing a tiny component (an octahedron around one lattice point)
+    // flat passes every per-triangle test but leaves a zero-volume pillow.
+    star_before.clear();
+    star_after.clear();
+    for(std::size_t r : {row_gone, row_keep})
+      for(std::size_t x = first[r]; x < first[r + 1]; ++x)
+      {
+        const std::size_t t = incident[x];
+        if(deleted[t])
+          continue;
+        const auto& tr = triangles[t];
+        if(r == row_keep && (tr[0] == gone || tr[1] == gone || tr[2] == gone))
+          continue; // an edge triangle, already in gone's star
+        star_before.push_back(tr);
+        if(t != edge_triangles[0] && t != edge_triangles[1])
+        {
+          std::array<std::size_t, 3> moved = tr;
+          for(std::size_t& w : moved)
+            w = w == gone ? keep : w;
+          star_after.push_back(moved);
+        }
+      }
+    const double fold_after = most_opposite_neighbours(points, star_after);
+    if(fold_after < max_fold_cosine && fold_after < most_opposite_neighbours(points, star_before))
       continue;
     for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
       for(std::size_t& w : triangles[incident[x]])
