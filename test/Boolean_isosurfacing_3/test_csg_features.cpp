@@ -512,8 +512,9 @@ TEST(CsgFeaturesTable, EveryFanSubsetKeepsTheCubeBoundary)
       MC::triangulate_feature_cube(table, code, [](int e) { return std::size_t(e); }, points, normals, decide, chunk);
       ASSERT_EQ(polygon, polygons);
       std::vector<Tri> patch;
-      for(Tri tr : chunk.triangles)
+      for(const MC::Feature_chunk::Triangle& chunk_triangle : chunk.triangles)
       {
+        Tri tr{{chunk_triangle[0], chunk_triangle[1], chunk_triangle[2]}};
         for(std::size_t& v : tr)
           if(v & MC::feature_vertex_flag)
             v = 12 + (v & ~MC::feature_vertex_flag);
@@ -706,6 +707,32 @@ TEST(CsgFeaturesTable, ShortEdgeOfATetrahedronIsNotCollapsed)
   EXPECT_EQ(MC::collapse_short_edges(octahedron, faces, octahedron.size(), 0.2, creases, corners), 1u);
   EXPECT_EQ(faces.size(), 6u);
   EXPECT_EQ(octahedron.size(), 5u);
+}
+
+// The corner table of the sliver flips, built from the vertices' corner lists
+// a range of vertices at a time (to bound its memory): the same table for
+// any range size, an involution, and a refusal of a non-manifold edge.
+TEST(CsgFeaturesTable, CornerTableDoesNotDependOnTheStarRanges)
+{
+  const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh b = rotated(make_box(Point(0.3, 0.3, 0.3), Point(1.4, 1.3, 1.2)), Point(0.5, 0.5, 0.5), Vector(0, 1, 1), 0.3);
+  const Csg_run plain = run_csg({a, b}, "A & !B", 24, false);
+  ASSERT_GT(plain.triangles.size(), 1000u);
+  std::vector<std::uint32_t> whole, ranged;
+  ASSERT_TRUE(MC::opposite_corners(plain.points.size(), plain.triangles, whole));
+  ASSERT_TRUE(MC::opposite_corners(plain.points.size(), plain.triangles, ranged, 7));
+  EXPECT_EQ(whole, ranged);
+  for(std::size_t c = 0; c < whole.size(); ++c)
+  {
+    ASSERT_LT(whole[c], whole.size());
+    EXPECT_EQ(whole[whole[c]], c);
+    EXPECT_NE(whole[c] / 3, c / 3);
+  }
+  // A third triangle on an edge: no table, whatever the ranges.
+  std::vector<Tri> three = plain.triangles;
+  three.push_back({{three[0][1], three[0][0], three[1][2]}});
+  EXPECT_FALSE(MC::opposite_corners(plain.points.size(), three, whole));
+  EXPECT_FALSE(MC::opposite_corners(plain.points.size(), three, ranged, 7));
 }
 
 // The Lawson flips alone, on plain Marching Cubes output (no collapse, no
@@ -989,16 +1016,30 @@ TEST(CsgFeatures, SharedPairsGiveClosedManifoldsWithoutSelfIntersections)
     check_valid(twin_run, "Generic_Twin union");
 }
 
-// bunny_hoppe minus its moved copy at 128 cells: the short-edge collapse once
-// turned a tiny tetrahedral component into two coincident triangles there
-// (PMP::does_self_intersect found the pair).
-TEST(CsgFeatures, BunnyMinusMovedCopyDoesNotSelfIntersect)
+// Shared meshes against their moved copy (issue 17's cases) where the output
+// once intersected itself: bunny_hoppe minus the copy at 128 cells (the
+// short-edge collapse squashed a tiny component into two coincident
+// triangles), rocker-arm united with it at 128 cells (a collapse turned a
+// triangle onto its outer neighbour in a lattice plane), fandisk minus it at
+// 256 cells (a fan pierced another polygon of its own cube).
+TEST(CsgFeatures, MovedCopiesThatOnceSelfIntersectedDoNot)
 {
-  Mesh bunny;
-  BI::IO::read_closed_triangle_mesh(std::string(BISO_SHARED_DATA_DIR) + "/meshes/bunny_hoppe.off", bunny);
-  const Csg_run run = run_csg({bunny, BI::test::moved_copy(bunny)}, "A & !B", 128);
-  check_valid(run, "bunny_hoppe - moved copy");
-  EXPECT_GT(run.statistics.collapsed_edges, 1000u);
+  const std::string dir = std::string(BISO_SHARED_DATA_DIR) + "/meshes/";
+  const struct
+  {
+    const char* file;
+    const char* expression;
+    std::size_t cells;
+  } cases[] = {{"bunny_hoppe.off", "A & !B", 128}, {"rocker-arm.obj", "A | B", 128}, {"fandisk.off", "A & !B", 256}};
+  for(const auto& c : cases)
+  {
+    Mesh mesh;
+    BI::IO::read_closed_triangle_mesh(dir + c.file, mesh);
+    const Csg_run run = run_csg({mesh, BI::test::moved_copy(mesh)}, c.expression, c.cells);
+    check_valid(run, std::string(c.file) + " " + c.expression + " moved copy");
+    EXPECT_GT(run.statistics.collapsed_edges, 1000u);
+    EXPECT_GT(run.statistics.feature_vertices, 100u);
+  }
 }
 
 

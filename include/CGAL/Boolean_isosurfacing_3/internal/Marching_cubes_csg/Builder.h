@@ -210,8 +210,8 @@ public:
   // With sharp features: `points` (the edge vertices) gets the feature
   // vertices appended, and `soup_creases`, `soup_corners` the crease edges and
   // corner vertices.
-  void compute_feature_triangles(std::vector<std::array<double, 3>>& points,
-                                 std::vector<std::array<std::size_t, 3>>& triangles,
+  template <typename Triangle>
+  void compute_feature_triangles(std::vector<std::array<double, 3>>& points, std::vector<Triangle>& triangles,
                                  std::vector<std::array<std::size_t, 2>>& soup_creases,
                                  std::vector<std::size_t>& soup_corners, Marching_cubes_csg_statistics& statistics,
                                  const Progress& progress)
@@ -219,6 +219,8 @@ public:
     CGAL_precondition(m_features.enabled);
     if(m_n[0] < 2 || m_n[1] < 2 || m_n[2] < 2)
       return;
+    if(points.size() >= Marching_cubes_csg::max_chunk_vertices)
+      throw Lattice_too_large_error("more than 2^31 edge points: too many for the feature path");
     const std::size_t layers = m_n[2] - 1;
     {
       // The chunks only change who computes what: the output is the
@@ -253,6 +255,14 @@ public:
       statistics.crease_edges = soup_creases.size();
       std::vector<Vector_3d>().swap(m_normals);
     }
+  }
+
+  // Frees the per-plane vertex numbering and states: what the triangles
+  // needed, and nothing after them does (the sliver passes need their memory).
+  void release_planes()
+  {
+    std::vector<Plane_changes>().swap(m_changes);
+    std::vector<Plane_rows>().swap(m_planes);
   }
 
   // Plain Marching Cubes, into `triangles` (whose elements are arrays of
@@ -978,20 +988,24 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
     builder.compute_plain_triangles(triangles, progress.part(0.8, 0.98));
   else
   {
-    // The feature triangulation and the collapse work on std::size_t indices.
-    std::vector<std::array<std::size_t, 3>> work;
+    // The feature triangulation and the sliver passes work on 32-bit
+    // indices: half the memory of std::size_t ones, and no copy for a caller
+    // who wants them (the tools).
+    typedef std::array<std::uint32_t, 3> Work_triangle;
+    std::vector<Work_triangle> work;
     if(features.enabled)
       builder.compute_feature_triangles(points, work, soup_features.crease_edges, soup_features.corner_vertices,
                                         statistics, progress.part(0.8, 0.98));
     else
       builder.compute_plain_triangles(work, progress.part(0.8, 0.98));
+    builder.release_planes();
     if(record_meshes)
       soup_features.vertex_meshes.resize(points.size(), Builder::no_mesh); // the feature vertices
     if(sliver > 0)
       statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges(
           points, work, edge_vertices, sliver * lattice.spacing(), soup_features.crease_edges,
           soup_features.corner_vertices, record_meshes ? &soup_features.vertex_meshes : nullptr);
-    if constexpr(std::is_same<Triangle, std::array<std::size_t, 3>>::value)
+    if constexpr(std::is_same<Triangle, Work_triangle>::value)
       triangles.swap(work);
     else
     {

@@ -16,8 +16,7 @@
 //  - no triangle that moves turns by more than 90 degrees, becomes
 //    degenerate, or becomes a worse sliver than it was (unless it stays
 //    above a quality of 1e-4);
-//  - no two neighbouring triangles fold onto each other (`max_fold_cosine`)
-//    where they did not before.
+//  - no moved triangle folds onto a neighbour (`max_fold_cosine`).
 // Feature vertices are never moved.  In one pass each vertex takes part in
 // at most one collapse, so the order of the collapses (sorted edges) cannot
 // matter more than one level, and the pass is O(triangles); a few passes
@@ -42,22 +41,25 @@ namespace Marching_cubes_csg {
 /// Passes of `collapse_short_edges()` at most.
 constexpr int max_collapse_passes = 4;
 
-/// A collapse may not create two neighbouring triangles whose normals make
-/// a cosine below this (an interior angle below about 26 degrees) unless the
-/// stars had one already.
+/// A collapse may not move a triangle so that its normal and a neighbour's
+/// make a cosine below this (an interior angle below about 26 degrees).
 constexpr double max_fold_cosine = -0.9;
 
 /// The smallest cosine between the normals of two triangles of `star` that
-/// share an edge (1 if none do, or if one of them is degenerate).
-inline double most_opposite_neighbours(const std::vector<Vector_3d>& points,
-                                       const std::vector<std::array<std::size_t, 3>>& star)
+/// share an edge, one of them `moved` (1 if none do, or if one of them is
+/// degenerate).
+template <typename Triangle>
+double most_opposite_neighbours(const std::vector<Vector_3d>& points, const std::vector<Triangle>& star,
+                                const std::vector<unsigned char>& moved)
 {
   double smallest = 1;
   for(std::size_t i = 0; i < star.size(); ++i)
     for(std::size_t j = i + 1; j < star.size(); ++j)
     {
+      if(!moved[i] && !moved[j])
+        continue;
       int shared = 0;
-      for(std::size_t v : star[i])
+      for(const std::size_t v : star[i])
         shared += int(v == star[j][0] || v == star[j][1] || v == star[j][2]);
       if(shared != 2)
         continue;
@@ -73,14 +75,15 @@ inline double most_opposite_neighbours(const std::vector<Vector_3d>& points,
 /// One pass of `collapse_short_edges()`: each vertex takes part in at most
 /// one collapse.  `first_feature_vertex` is updated with the renumbering, and
 /// `labels` (one per point, if not null) is compacted with the points.
-inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
-                                             std::vector<std::array<std::size_t, 3>>& triangles,
+template <typename Triangle>
+std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                              std::size_t& first_feature_vertex, double max_length,
                                              std::vector<std::array<std::size_t, 2>>& creases,
                                              std::vector<std::size_t>& corners,
                                              std::vector<std::uint8_t>* labels = nullptr)
 {
   typedef std::array<std::size_t, 2> Edge;
+  typedef typename Triangle::value_type Index;
   const double max_squared = max_length * max_length;
   std::vector<Edge> candidates;
   for(const auto& t : triangles)
@@ -98,13 +101,18 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
     return 0;
   std::sort(candidates.begin(), candidates.end());
 
-  // Incident triangles of the candidates' ends (compressed rows): only their
-  // stars are read, and rows for every vertex were 32 bytes a triangle.
+  // Incident triangles of the candidates' ends and of their neighbours
+  // (compressed rows): only their stars are read (the fold test reads the
+  // triangle across each outer edge of a moved triangle), and rows for every
+  // vertex were 32 bytes a triangle.
   const std::size_t nv = points.size();
+  std::vector<unsigned char> touched(nv, 0), deleted(triangles.size(), 0);
   std::vector<std::size_t> ends;
-  ends.reserve(2 * candidates.size());
   for(const Edge& e : candidates)
-    ends.insert(ends.end(), e.begin(), e.end());
+    touched[e[0]] = touched[e[1]] = 3;
+  for(const auto& t : triangles)
+    if(touched[t[0]] == 3 || touched[t[1]] == 3 || touched[t[2]] == 3)
+      ends.insert(ends.end(), t.begin(), t.end());
   std::sort(ends.begin(), ends.end());
   ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
   // The row of each end (none for the other vertices).
@@ -121,9 +129,8 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
     return small_rows ? std::size_t(row_of[v])
                       : std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin());
   };
-  std::vector<unsigned char> touched(nv, 0), deleted(triangles.size(), 0);
   for(std::size_t v : ends)
-    touched[v] = 3; // an end (cleared below)
+    touched[v] = 3; // has a row (cleared below)
   std::vector<std::size_t> first(ends.size() + 1, 0);
   for(const auto& t : triangles)
     for(std::size_t v : t)
@@ -142,7 +149,8 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
   for(std::size_t v : ends)
     touched[v] = 0;
   std::vector<std::size_t> neighbours_u, neighbours_v, common;
-  std::vector<std::array<std::size_t, 3>> star_before, star_after;
+  std::vector<Triangle> star_after;
+  std::vector<unsigned char> moved_flags;
   const auto neighbours = [&](std::size_t r, std::size_t v, std::vector<std::size_t>& out) {
     out.clear();
     for(std::size_t e = first[r]; e < first[r + 1]; ++e)
@@ -227,37 +235,56 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
     }
     if(!ok)
       continue;
-    // No new fold: two triangles of the new star across an edge must not
-    // face (nearly) opposite ways unless the stars already had such a pair.
-    // Squashing a tiny component (an octahedron around one lattice point)
-    // flat passes every per-triangle test but leaves a zero-volume pillow.
-    star_before.clear();
+    // No fold: a moved triangle and a triangle across one of its edges must
+    // not face (nearly) opposite ways.  Squashing a tiny component (an
+    // octahedron around one lattice point) flat, or turning a triangle onto
+    // its outer neighbour in a lattice plane, passes every per-triangle test
+    // but makes the surface overlap itself.
     star_after.clear();
-    for(std::size_t r : {row_gone, row_keep})
-      for(std::size_t x = first[r]; x < first[r + 1]; ++x)
+    moved_flags.clear();
+    for(std::size_t x = first[row_keep]; x < first[row_keep + 1]; ++x)
+    {
+      const std::size_t t = incident[x];
+      if(!deleted[t] && t != edge_triangles[0] && t != edge_triangles[1])
       {
-        const std::size_t t = incident[x];
-        if(deleted[t])
-          continue;
-        const auto& tr = triangles[t];
-        if(r == row_keep && (tr[0] == gone || tr[1] == gone || tr[2] == gone))
-          continue; // an edge triangle, already in gone's star
-        star_before.push_back(tr);
-        if(t != edge_triangles[0] && t != edge_triangles[1])
+        star_after.push_back(triangles[t]);
+        moved_flags.push_back(0);
+      }
+    }
+    for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
+    {
+      const std::size_t t = incident[x];
+      if(deleted[t] || t == edge_triangles[0] || t == edge_triangles[1])
+        continue;
+      Triangle moved = triangles[t];
+      std::array<std::size_t, 2> outer{{0, 0}};
+      int o = 0;
+      for(Index& w : moved)
+        if(w == gone)
+          w = Index(keep);
+        else if(o < 2)
+          outer[o++] = w;
+      star_after.push_back(moved);
+      moved_flags.push_back(1);
+      // The triangle across the outer edge (it has a row: a neighbour of gone).
+      const std::size_t r = row(outer[0]);
+      for(std::size_t y = first[r]; y < first[r + 1]; ++y)
+      {
+        const std::size_t n = incident[y];
+        const auto& tn = triangles[n];
+        if(n != t && !deleted[n] && std::count(tn.begin(), tn.end(), outer[1]) == 1)
         {
-          std::array<std::size_t, 3> moved = tr;
-          for(std::size_t& w : moved)
-            w = w == gone ? keep : w;
-          star_after.push_back(moved);
+          star_after.push_back(tn);
+          moved_flags.push_back(0);
         }
       }
-    const double fold_after = most_opposite_neighbours(points, star_after);
-    if(fold_after < max_fold_cosine && fold_after < most_opposite_neighbours(points, star_before))
+    }
+    if(most_opposite_neighbours(points, star_after, moved_flags) < max_fold_cosine)
       continue;
     for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
-      for(std::size_t& w : triangles[incident[x]])
+      for(Index& w : triangles[incident[x]])
         if(w == gone)
-          w = keep;
+          w = Index(keep);
     deleted[edge_triangles[0]] = deleted[edge_triangles[1]] = 1;
     touched[gone] = 2; // removed below
     touched[keep] = 1;
@@ -285,9 +312,9 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
   for(std::size_t t = 0; t < triangles.size(); ++t)
     if(!deleted[t])
     {
-      std::array<std::size_t, 3> tr = triangles[t];
-      for(std::size_t& v : tr)
-        v = new_index[v];
+      Triangle tr = triangles[t];
+      for(Index& v : tr)
+        v = Index(new_index[v]);
       triangles[out++] = tr;
     }
   triangles.resize(out);
@@ -309,7 +336,8 @@ inline std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points,
 /// slivers are flipped away where the surface is nearly flat
 /// (`flip_slivers()`, the crease edges kept).  `labels` (one per point, if
 /// not null) follows the renumbering.
-inline std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<std::array<std::size_t, 3>>& triangles,
+template <typename Triangle>
+std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                         std::size_t first_feature_vertex, double max_length,
                                         std::vector<std::array<std::size_t, 2>>& creases,
                                         std::vector<std::size_t>& corners,

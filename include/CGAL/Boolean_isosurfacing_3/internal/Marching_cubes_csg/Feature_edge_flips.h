@@ -45,9 +45,10 @@ struct Flipped_edge
 /// the triangles of the form (a, b, apex) with `a`, `b` edge points (indices
 /// below `normals.size()`) and `apex` a feature vertex.  Appends the new
 /// apex-apex edges to `flipped`, in a deterministic order.
-inline void flip_feature_edges(const std::vector<Vector_3d>& points, const std::vector<Vector_3d>& normals,
-                               std::vector<std::array<std::size_t, 3>>& triangles, const std::vector<std::size_t>& fans,
-                               std::vector<Flipped_edge>& flipped)
+template <typename Triangle>
+void flip_feature_edges(const std::vector<Vector_3d>& points, const std::vector<Vector_3d>& normals,
+                        std::vector<Triangle>& triangles, const std::vector<std::size_t>& fans,
+                        std::vector<Flipped_edge>& flipped)
 {
   typedef std::tuple<std::size_t, std::size_t, std::size_t> Keyed; // (low vertex, high vertex, triangle)
   std::vector<Keyed> sides;
@@ -93,8 +94,8 @@ inline void flip_feature_edges(const std::vector<Vector_3d>& points, const std::
     if(!(triangle_quality(points[a], points[f2], points[f1]) > degenerate_quality &&
          triangle_quality(points[f2], points[b], points[f1]) > degenerate_quality))
       continue;
-    triangles[t1] = {{a, f2, f1}};
-    triangles[t2] = {{f2, b, f1}};
+    triangles[t1] = make_triangle<Triangle>(a, f2, f1);
+    triangles[t2] = make_triangle<Triangle>(f2, b, f1);
     const double l1 = std::sqrt(dot3(n1, n1)), l2 = std::sqrt(dot3(n2, n2));
     flipped.push_back(Flipped_edge{(std::min)(f1, f2), (std::max)(f1, f2), dot3(n1, n2) / (l1 * l2)});
   }

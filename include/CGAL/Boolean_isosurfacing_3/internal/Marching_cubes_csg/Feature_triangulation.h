@@ -18,6 +18,10 @@
 // soup (Feature_edge_flips.h).
 
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/assertions.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_edge_flips.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_vertex.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
@@ -74,8 +78,10 @@ inline Vector_3d outward_normal(const Triangle_tangent& t, int axis, bool increa
 }
 
 /// Marks feature vertices in the per-chunk triangles before they get their
-/// global number.
-constexpr std::size_t feature_vertex_flag = ~((std::numeric_limits<std::size_t>::max)() >> 1);
+/// global number (so edge points and a chunk's feature points must number
+/// fewer than 2^31: `max_chunk_vertices`).
+constexpr std::uint32_t feature_vertex_flag = std::uint32_t(1) << 31;
+constexpr std::size_t max_chunk_vertices = feature_vertex_flag;
 
 /// Polygons whose normals disagree but that keep the plain triangulation:
 /// no feature point in the cube, or a fan that would fold.
@@ -87,7 +93,10 @@ struct Plain_feature_counts
 /// What the triangulation of a range of cubes produces.
 struct Feature_chunk
 {
-  std::vector<std::array<std::size_t, 3>> triangles;
+  // 32-bit: all chunks together hold every triangle of the output, at the
+  // memory peak of the feature path.
+  typedef std::array<std::uint32_t, 3> Triangle;
+  std::vector<Triangle> triangles;
   std::vector<Vector_3d> feature_points;
   std::vector<Feature_kind> feature_kinds;
   std::vector<std::size_t> fans; // fan triangles, indices into `triangles`
@@ -134,11 +143,49 @@ private:
   Plain_feature_counts& m_counts;
 };
 
+/// Whether two triangles of different polygons of one cube intersect: the
+/// triangles of polygon q are `out.triangles[end[q - 1] .. end[q])` (from
+/// `first` for q = 0).  Polygons share no vertex, so any common point is a
+/// crossing.  Exact predicates; degenerate triangles are skipped.
+inline bool polygons_intersect(const Feature_chunk& out, std::size_t first, const std::size_t* end,
+                               unsigned polygons, const std::vector<Vector_3d>& points)
+{
+  typedef Exact_predicates_inexact_constructions_kernel K;
+  const auto point = [&](std::uint32_t v) {
+    const Vector_3d& p = (v & feature_vertex_flag) ? out.feature_points[v & ~feature_vertex_flag] : points[v];
+    return K::Point_3(p[0], p[1], p[2]);
+  };
+  std::vector<K::Triangle_3> triangles;
+  std::vector<unsigned> polygon_of;
+  unsigned q = 0;
+  for(std::size_t t = first; t < end[polygons - 1]; ++t)
+  {
+    while(t >= end[q])
+      ++q;
+    const auto& tr = out.triangles[t];
+    const K::Triangle_3 triangle(point(tr[0]), point(tr[1]), point(tr[2]));
+    if(!triangle.is_degenerate())
+    {
+      triangles.push_back(triangle);
+      polygon_of.push_back(q);
+    }
+  }
+  for(std::size_t i = 0; i < triangles.size(); ++i)
+    for(std::size_t j = i + 1; j < triangles.size(); ++j)
+      if(polygon_of[i] != polygon_of[j] && CGAL::do_intersect(triangles[i], triangles[j]))
+        return true;
+  return false;
+}
+
 /// Triangulates a cube with `code` (default face rule) into `out`.
 /// `vertex_of(e)` is the global number of the vertex on cube edge e;
 /// `decide(p, n, size, apex)` returns whether the polygon with these vertices
 /// and normals is fanned around `apex` (`Feature_decision`; the tests use
 /// others).  Whatever `decide` says, the cube's boundary is the face rule's.
+/// The polygons of one cube are disjoint, but a fan around a feature vertex
+/// can pierce another polygon of the same cube (seen on fandisk minus a
+/// moved copy at 256 cells): then the whole cube keeps the plain
+/// triangulation.
 template <typename VertexOf, typename Decision>
 void triangulate_feature_cube(const Marching_cubes_table& table, unsigned code, const VertexOf& vertex_of,
                               const std::vector<Vector_3d>& points, const std::vector<Vector_3d>& normals,
@@ -147,7 +194,10 @@ void triangulate_feature_cube(const Marching_cubes_table& table, unsigned code, 
   const Marching_cubes_table::Triangle_range plain = table.triangles(code);
   const unsigned polygons = table.number_of_polygons(code);
   std::size_t first_triangle = 0; // of the current polygon in `plain`
+  const std::size_t triangles_before = out.triangles.size(), features_before = out.feature_points.size(),
+                    fans_before = out.fans.size();
   std::array<std::size_t, 12> ids;
+  std::array<std::size_t, 5> polygon_end; // the end of each polygon's triangles in `out`
   std::array<Vector_3d, 12> p, n;
   for(unsigned q = 0; q < polygons; ++q)
   {
@@ -163,13 +213,14 @@ void triangulate_feature_cube(const Marching_cubes_table& table, unsigned code, 
     const Feature_kind kind = decide(p.data(), n.data(), size, apex);
     if(kind != Feature_kind::NONE)
     {
+      CGAL_assertion(out.feature_points.size() < max_chunk_vertices);
       const std::size_t f = feature_vertex_flag | out.feature_points.size();
       out.feature_points.push_back(apex);
       out.feature_kinds.push_back(kind);
       for(std::size_t i = 0; i < size; ++i)
       {
         out.fans.push_back(out.triangles.size());
-        out.triangles.push_back({{ids[i], ids[(i + 1) % size], f}});
+        out.triangles.push_back(make_triangle<Feature_chunk::Triangle>(ids[i], ids[(i + 1) % size], f));
       }
     }
     else
@@ -177,21 +228,35 @@ void triangulate_feature_cube(const Marching_cubes_table& table, unsigned code, 
       // The default rule never needs a centre vertex: the polygon's
       // triangles are the next size - 2 of the table, in order.
       for(std::size_t t = first_triangle; t < first_triangle + size - 2; ++t)
-        out.triangles.push_back({{vertex_of(int(plain[t][0])), vertex_of(int(plain[t][1])), vertex_of(int(plain[t][2]))}});
+        out.triangles.push_back(make_triangle<Feature_chunk::Triangle>(
+            vertex_of(int(plain[t][0])), vertex_of(int(plain[t][1])), vertex_of(int(plain[t][2]))));
     }
     first_triangle += size - 2;
+    polygon_end[q] = out.triangles.size();
   }
+  if(polygons < 2 || out.feature_points.size() == features_before ||
+     !polygons_intersect(out, triangles_before, polygon_end.data(), polygons, points))
+    return;
+  out.plain.folded += out.feature_points.size() - features_before;
+  out.triangles.resize(triangles_before);
+  out.feature_points.resize(features_before);
+  out.feature_kinds.resize(features_before);
+  out.fans.resize(fans_before);
+  for(const Marching_cubes_table::Triangle& t : plain)
+    out.triangles.push_back(make_triangle<Feature_chunk::Triangle>(vertex_of(int(t[0])), vertex_of(int(t[1])),
+                                                                   vertex_of(int(t[2]))));
 }
 
 /// Numbers the feature vertices of the chunks after the `points` already
 /// there (chunk by chunk, so the result does not depend on the chunking),
 /// moves the triangles to `triangles`, flips the face segments between
-/// neighbouring fans and returns the feature vertices' kinds.
-inline std::vector<Feature_kind> merge_feature_chunks(std::vector<Feature_chunk>& chunks,
-                                                      std::vector<Vector_3d>& points,
-                                                      const std::vector<Vector_3d>& normals,
-                                                      std::vector<std::array<std::size_t, 3>>& triangles,
-                                                      std::vector<Flipped_edge>& flipped)
+/// neighbouring fans and returns the feature vertices' kinds.  Throws
+/// `Lattice_too_large_error` if the index type of `Triangle` cannot number
+/// all the points.
+template <typename Triangle>
+std::vector<Feature_kind> merge_feature_chunks(std::vector<Feature_chunk>& chunks, std::vector<Vector_3d>& points,
+                                               const std::vector<Vector_3d>& normals, std::vector<Triangle>& triangles,
+                                               std::vector<Flipped_edge>& flipped)
 {
   std::size_t total = 0, features = 0;
   for(const Feature_chunk& c : chunks)
@@ -199,6 +264,9 @@ inline std::vector<Feature_kind> merge_feature_chunks(std::vector<Feature_chunk>
     total += c.triangles.size();
     features += c.feature_points.size();
   }
+  const std::size_t vertices = points.size() + features;
+  if(vertices != 0 && vertices - 1 > std::size_t((std::numeric_limits<typename Triangle::value_type>::max)()))
+    throw Lattice_too_large_error("the output has more vertices than its index type can number");
   triangles.reserve(triangles.size() + total);
   points.reserve(points.size() + features);
   std::vector<Feature_kind> kinds;
@@ -207,12 +275,13 @@ inline std::vector<Feature_kind> merge_feature_chunks(std::vector<Feature_chunk>
   for(Feature_chunk& c : chunks)
   {
     const std::size_t vertex_offset = points.size(), triangle_offset = triangles.size();
-    for(std::array<std::size_t, 3> t : c.triangles)
+    for(const Feature_chunk::Triangle& chunk_triangle : c.triangles)
     {
+      std::array<std::size_t, 3> t{{chunk_triangle[0], chunk_triangle[1], chunk_triangle[2]}};
       for(std::size_t& v : t)
         if(v & feature_vertex_flag)
           v = vertex_offset + (v & ~feature_vertex_flag);
-      triangles.push_back(t);
+      triangles.push_back(make_triangle<Triangle>(t[0], t[1], t[2]));
     }
     points.insert(points.end(), c.feature_points.begin(), c.feature_points.end());
     kinds.insert(kinds.end(), c.feature_kinds.begin(), c.feature_kinds.end());

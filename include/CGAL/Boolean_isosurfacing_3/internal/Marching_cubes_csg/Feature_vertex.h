@@ -43,6 +43,15 @@ inline Vector_3d triangle_normal(const Vector_3d& a, const Vector_3d& b, const V
   return cross3(sub3(b, a), sub3(c, a));
 }
 
+/// The triangle (a, b, c) in the index type of `Triangle` (an array of three
+/// unsigned integers; the caller makes sure the indices fit).
+template <typename Triangle>
+Triangle make_triangle(std::size_t a, std::size_t b, std::size_t c)
+{
+  typedef typename Triangle::value_type Index;
+  return Triangle{{Index(a), Index(b), Index(c)}};
+}
+
 /// What kind of feature a polygon's tangent planes describe.
 enum class Feature_kind : unsigned char { NONE = 0, CREASE = 2, CORNER = 3 };
 

@@ -67,51 +67,68 @@ struct Sliver_flip_settings
 /// is the corner, in the neighbouring triangle, facing the same edge), or
 /// false if the soup is not a closed, consistently oriented 2-manifold.
 /// A corner table is 3 indices per triangle: the hash table of edges it
-/// replaces needed about 48 bytes per edge (4.7 GB at 2048 cells).
-template <typename Index>
-bool opposite_corners(std::size_t number_of_points, const std::vector<std::array<std::size_t, 3>>& triangles,
-                      std::vector<Index>& opposite)
+/// replaces needed about 48 bytes per edge (4.7 GB at 2048 cells).  The
+/// vertices' corner lists it is built from take at most `max_star_corners`
+/// entries at a time.
+template <typename Index, typename Triangle>
+bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>& triangles, std::vector<Index>& opposite,
+                      std::size_t max_star_corners = std::size_t(1) << 24)
 {
   const std::size_t corners = 3 * triangles.size();
   const Index none = Index(-1);
-  // The corners of each vertex, in compressed rows.
-  std::vector<Index> first(number_of_points + 1, 0);
   for(const auto& t : triangles)
     for(std::size_t v : t)
-    {
       if(v >= number_of_points)
         return false;
-      ++first[v + 1];
-    }
-  for(std::size_t v = 0; v < number_of_points; ++v)
-    first[v + 1] += first[v];
-  std::vector<Index> star(corners);
-  {
-    std::vector<Index> fill(first.begin(), first.end() - 1);
-    for(std::size_t c = 0; c < corners; ++c)
-      star[fill[triangles[c / 3][c % 3]]++] = Index(c);
-  }
-  const auto vertex = [&](std::size_t c) { return triangles[c / 3][c % 3]; };
+  const auto vertex = [&](std::size_t c) { return std::size_t(triangles[c / 3][c % 3]); };
   const auto next = [](std::size_t c) { return c - c % 3 + (c + 1) % 3; };
   const auto previous = [](std::size_t c) { return c - c % 3 + (c + 2) % 3; };
   opposite.assign(corners, none);
-  for(std::size_t c = 0; c < corners; ++c)
+  // The corners of each vertex (compressed rows), built for one range of
+  // vertices at a time: the rows of all vertices at once would be another
+  // 4 bytes a corner at the memory peak of the feature path.  The ranges
+  // only change the order of the work, not the table.
+  const std::size_t ranges = (std::max)(std::size_t(1), (corners + max_star_corners - 1) / max_star_corners);
+  std::vector<Index> first, star, fill;
+  for(std::size_t r = 0; r < ranges; ++r)
   {
-    // The edge v -> w of corner c's triangle faces previous(c); its twin
-    // w -> v must be in exactly one other triangle (a second v -> w would
-    // make the twin's own search find two).
-    const std::size_t v = vertex(c), w = vertex(next(c));
-    std::size_t twin = corners;
-    for(Index x = first[w]; x < first[w + 1]; ++x)
-      if(vertex(next(star[x])) == v)
-      {
-        if(twin != corners)
-          return false;
-        twin = star[x];
-      }
-    if(twin == corners)
-      return false;
-    opposite[previous(c)] = Index(previous(twin));
+    const std::size_t low = number_of_points * r / ranges, high = number_of_points * (r + 1) / ranges;
+    first.assign(high - low + 1, 0);
+    for(const auto& t : triangles)
+      for(std::size_t v : t)
+        if(v >= low && v < high)
+          ++first[v - low + 1];
+    for(std::size_t v = 0; v < high - low; ++v)
+      first[v + 1] += first[v];
+    star.resize(first.back());
+    fill.assign(first.begin(), first.end() - 1);
+    for(std::size_t c = 0; c < corners; ++c)
+    {
+      const std::size_t v = vertex(c);
+      if(v >= low && v < high)
+        star[fill[v - low]++] = Index(c);
+    }
+    for(std::size_t c = 0; c < corners; ++c)
+    {
+      // The edge v -> w of corner c's triangle faces previous(c); its twin
+      // w -> v must be in exactly one other triangle (a second v -> w would
+      // make the twin's own search find two).
+      const std::size_t w = vertex(next(c));
+      if(w < low || w >= high)
+        continue;
+      const std::size_t v = vertex(c);
+      std::size_t twin = corners;
+      for(Index x = first[w - low]; x < first[w - low + 1]; ++x)
+        if(vertex(next(star[x])) == v)
+        {
+          if(twin != corners)
+            return false;
+          twin = star[x];
+        }
+      if(twin == corners)
+        return false;
+      opposite[previous(c)] = Index(previous(twin));
+    }
   }
   return true;
 }
@@ -119,9 +136,8 @@ bool opposite_corners(std::size_t number_of_points, const std::vector<std::array
 /// Flips edges of the closed, oriented triangle soup to raise its smallest
 /// angles (see above).  `protected_edges` (vertex pairs) are never flipped.
 /// Returns the number of flips.
-template <typename Index>
-std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points,
-                                      std::vector<std::array<std::size_t, 3>>& triangles,
+template <typename Index, typename Triangle>
+std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                       const std::vector<std::array<std::size_t, 2>>& protected_edges,
                                       const Sliver_flip_settings& settings)
 {
@@ -214,8 +230,8 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points,
     // a-d (facing b in t2) and d-b (facing a in t2).
     const std::size_t across_bc = opposite[next(c1)], across_ca = opposite[previous(c1)];
     const std::size_t across_ad = opposite[next(c2)], across_db = opposite[previous(c2)];
-    triangles[t1] = {{a, d, c}};
-    triangles[t2] = {{d, b, c}};
+    triangles[t1] = make_triangle<Triangle>(a, d, c);
+    triangles[t2] = make_triangle<Triangle>(d, b, c);
     const std::size_t f1 = 3 * t1, f2 = 3 * t2; // corners of a, d, c and of d, b, c
     link(f1 + 0, f2 + 1); // facing the new edge d-c
     link(f1 + 1, across_ca);
@@ -256,14 +272,15 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points,
 /// angles (see above), on a corner table of 32-bit indices where they
 /// suffice.  `protected_edges` (vertex pairs) are never flipped.  Returns
 /// the number of flips (0 if the soup is not a closed 2-manifold).
-inline std::size_t flip_slivers(const std::vector<Vector_3d>& points, std::vector<std::array<std::size_t, 3>>& triangles,
-                                const std::vector<std::array<std::size_t, 2>>& protected_edges,
-                                const Sliver_flip_settings& settings)
+template <typename Triangle>
+std::size_t flip_slivers(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
+                         const std::vector<std::array<std::size_t, 2>>& protected_edges,
+                         const Sliver_flip_settings& settings)
 {
   if(3 * triangles.size() < std::size_t(std::numeric_limits<std::uint32_t>::max()) &&
      points.size() < std::size_t(std::numeric_limits<std::uint32_t>::max()))
-    return flip_slivers_with_corners<std::uint32_t>(points, triangles, protected_edges, settings);
-  return flip_slivers_with_corners<std::size_t>(points, triangles, protected_edges, settings);
+    return flip_slivers_with_corners<std::uint32_t, Triangle>(points, triangles, protected_edges, settings);
+  return flip_slivers_with_corners<std::size_t, Triangle>(points, triangles, protected_edges, settings);
 }
 
 } // namespace Marching_cubes_csg
