@@ -31,6 +31,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -84,6 +86,11 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
 {
   typedef std::array<std::size_t, 2> Edge;
   typedef typename Triangle::value_type Index;
+  // Rows of 32-bit triangle numbers with 32-bit vertex indices: no collapse
+  // (never wrong) on outputs of more than about 1.4 billion triangles.
+  typedef typename std::conditional<sizeof(Index) <= 4, std::uint32_t, std::size_t>::type Triangle_index;
+  if(3 * triangles.size() > std::size_t((std::numeric_limits<Triangle_index>::max)()))
+    return 0;
   const double max_squared = max_length * max_length;
   std::vector<Edge> candidates;
   for(const auto& t : triangles)
@@ -107,14 +114,20 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
   // vertex were 32 bytes a triangle.
   const std::size_t nv = points.size();
   std::vector<unsigned char> touched(nv, 0), deleted(triangles.size(), 0);
-  std::vector<std::size_t> ends;
+  // 3: the end that stays, 5: the end that may go (its neighbours get rows).
   for(const Edge& e : candidates)
-    touched[e[0]] = touched[e[1]] = 3;
+  {
+    touched[e[0]] = touched[e[0]] == 0 ? 3 : touched[e[0]];
+    touched[e[1]] = 5;
+  }
   for(const auto& t : triangles)
-    if(touched[t[0]] == 3 || touched[t[1]] == 3 || touched[t[2]] == 3)
-      ends.insert(ends.end(), t.begin(), t.end());
-  std::sort(ends.begin(), ends.end());
-  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    if(touched[t[0]] == 5 || touched[t[1]] == 5 || touched[t[2]] == 5)
+      for(const std::size_t v : t)
+        touched[v] = touched[v] == 0 ? 4 : touched[v];
+  std::vector<std::size_t> ends; // in increasing order
+  for(std::size_t v = 0; v < nv; ++v)
+    if(touched[v] != 0)
+      ends.push_back(v);
   // The row of each end (none for the other vertices).
   const std::uint32_t no_row = std::uint32_t(-1);
   std::vector<std::uint32_t> row_of;
@@ -131,20 +144,20 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
   };
   for(std::size_t v : ends)
     touched[v] = 3; // has a row (cleared below)
-  std::vector<std::size_t> first(ends.size() + 1, 0);
+  std::vector<Triangle_index> first(ends.size() + 1, 0);
   for(const auto& t : triangles)
     for(std::size_t v : t)
       if(touched[v] == 3)
         ++first[row(v) + 1];
   for(std::size_t r = 0; r < ends.size(); ++r)
     first[r + 1] += first[r];
-  std::vector<std::size_t> incident(first.back());
+  std::vector<Triangle_index> incident(first.back());
   {
-    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    std::vector<Triangle_index> fill(first.begin(), first.end() - 1);
     for(std::size_t t = 0; t < triangles.size(); ++t)
       for(std::size_t v : triangles[t])
         if(touched[v] == 3)
-          incident[fill[row(v)]++] = t;
+          incident[fill[row(v)]++] = Triangle_index(t);
   }
   for(std::size_t v : ends)
     touched[v] = 0;

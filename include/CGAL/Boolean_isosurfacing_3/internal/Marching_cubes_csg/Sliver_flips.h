@@ -72,7 +72,7 @@ struct Sliver_flip_settings
 /// entries at a time.
 template <typename Index, typename Triangle>
 bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>& triangles, std::vector<Index>& opposite,
-                      std::size_t max_star_corners = std::size_t(1) << 24)
+                      std::size_t max_star_corners = std::size_t(1) << 25)
 {
   const std::size_t corners = 3 * triangles.size();
   const Index none = Index(-1);
