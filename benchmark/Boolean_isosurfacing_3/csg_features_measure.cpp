@@ -131,20 +131,6 @@ Mesh make_cylinder(const Point& base, double radius, double height, int segments
   return BI::test::make_cylinder<Mesh>(base, radius, height, segments);
 }
 
-// `mesh` rotated by `angle` about the axis through `c` and moved by `t`.
-Mesh moved(const Mesh& mesh, const Point& c, const Vector& axis, double angle, const Vector& t)
-{
-  const Vector u = axis / std::sqrt(axis.squared_length());
-  const double co = std::cos(angle), s = std::sin(angle);
-  Mesh copy = mesh;
-  for(auto v : vertices(copy))
-  {
-    const Vector p = copy.point(v) - c;
-    copy.point(v) = c + p * co + CGAL::cross_product(u, p) * s + u * (u * p) * (1 - co) + t;
-  }
-  return copy;
-}
-
 Mesh read_mesh(const std::string& path)
 {
   Mesh m;
@@ -171,7 +157,7 @@ std::vector<Case> all_cases(const std::string& data)
   cases.push_back({"box&rotbox",
                    [] {
                      return std::vector<Mesh>{make_box(Point(0, 0, 0), Point(1, 1, 1)),
-                                              moved(make_box(Point(0.2, 0.25, 0.15), Point(1.3, 1.2, 1.25)),
+                                              BI::test::moved(make_box(Point(0.2, 0.25, 0.15), Point(1.3, 1.2, 1.25)),
                                                     Point(0.5, 0.5, 0.5), Vector(1, 2, 3), 0.45, Vector(0, 0, 0))};
                    },
                    '&'});

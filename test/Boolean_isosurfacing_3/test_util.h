@@ -97,6 +97,22 @@ Mesh make_cylinder(const Point& base, double radius, double height, int segments
   return mesh;
 }
 
+/// `mesh` rotated by `angle` (radians) about the axis through `c` along
+/// `axis` (Rodrigues' formula), then moved by `t`.
+template <typename Mesh, typename Point, typename Vector>
+Mesh moved(const Mesh& mesh, const Point& c, const Vector& axis, double angle, const Vector& t)
+{
+  const Vector u = axis / std::sqrt(axis.squared_length());
+  const double co = std::cos(angle), s = std::sin(angle);
+  Mesh copy = mesh;
+  for(auto v : vertices(copy))
+  {
+    const Vector p = get(CGAL::vertex_point, copy, v) - c;
+    put(CGAL::vertex_point, copy, v, c + p * co + CGAL::cross_product(u, p) * s + u * (u * p) * (1 - co) + t);
+  }
+  return copy;
+}
+
 /// Issue 17's moved copy of a mesh: rotated by 10 degrees about the axis
 /// (1, 2, 3) through its bounding box centre, then moved by (0.137, 0.091,
 /// 0.063) times the box's longest side.
@@ -109,16 +125,7 @@ Mesh moved_copy(const Mesh& mesh)
   const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
   const double size = (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
   const Point c((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2, (b.zmin() + b.zmax()) / 2);
-  const Vector axis(1, 2, 3), t(0.137 * size, 0.091 * size, 0.063 * size);
-  const Vector u = axis / std::sqrt(axis.squared_length());
-  const double co = std::cos(10 * pi / 180), s = std::sin(10 * pi / 180);
-  Mesh copy = mesh;
-  for(auto v : vertices(copy))
-  {
-    const Vector p = get(CGAL::vertex_point, copy, v) - c;
-    put(CGAL::vertex_point, copy, v, c + p * co + CGAL::cross_product(u, p) * s + u * (u * p) * (1 - co) + t);
-  }
-  return copy;
+  return moved(mesh, c, Vector(1, 2, 3), 10 * pi / 180, Vector(0.137 * size, 0.091 * size, 0.063 * size));
 }
 
 /// The signed distance to the sphere of centre (cx, cy, cz) and radius r (negative inside).

@@ -183,17 +183,14 @@ public:
     const std::size_t nz = m_n[2];
     if(m_vertex_offset[nz] >= (std::size_t(1) << 32) && sizeof(std::size_t) < 8)
       throw Lattice_too_large_error("too many output vertices for this platform");
+    // Room for the feature vertices appended later (about 1 % of the edge
+    // points; untouched capacity costs no memory): growing the vector then
+    // would hold two copies of every point at once.
     if(m_features.enabled)
-    {
-      // Room for the feature vertices appended later (about 1 % of the
-      // edge points; untouched capacity costs no memory): growing the
-      // vector then would hold two copies of every point at once.
       points.reserve(m_vertex_offset[nz] + m_vertex_offset[nz] / 8 + 64);
-      points.resize(m_vertex_offset[nz]);
+    points.resize(m_vertex_offset[nz]);
+    if(m_features.enabled)
       m_normals.resize(points.size());
-    }
-    else
-      points.resize(m_vertex_offset[nz]);
     if(m_vertex_meshes != nullptr)
       m_vertex_meshes->assign(points.size(), no_mesh);
     concurrent_for<ConcurrencyTag>(

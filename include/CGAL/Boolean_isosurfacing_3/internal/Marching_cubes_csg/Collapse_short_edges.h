@@ -226,33 +226,13 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
     };
     if(has_triangle_with_opposites(row_gone) && has_triangle_with_opposites(row_keep))
       continue;
-    // The triangles of `gone` that move must keep their orientation.
-    bool ok = true;
-    for(std::size_t x = first[row_gone]; x < first[row_gone + 1] && ok; ++x)
-    {
-      const std::size_t t = incident[x];
-      if(deleted[t] || t == edge_triangles[0] || t == edge_triangles[1])
-        continue;
-      std::array<Vector_3d, 3> before, after;
-      for(int i = 0; i < 3; ++i)
-      {
-        before[i] = points[triangles[t][i]];
-        after[i] = triangles[t][i] == gone ? points[keep] : before[i];
-      }
-      const Vector_3d n0 = triangle_normal(before[0], before[1], before[2]);
-      const Vector_3d n1 = triangle_normal(after[0], after[1], after[2]);
-      // Never a turned or a worse sliver than before (below 1e-4, about 0.25 degree).
-      const double q1 = triangle_quality(after[0], after[1], after[2]);
-      ok = dot3(n0, n1) > 0 && (q1 > 1e-4 || q1 >= triangle_quality(before[0], before[1], before[2])) &&
-           q1 > degenerate_quality;
-    }
-    if(!ok)
-      continue;
-    // No fold: a moved triangle and a triangle across one of its edges must
-    // not face (nearly) opposite ways.  Squashing a tiny component (an
-    // octahedron around one lattice point) flat, or turning a triangle onto
-    // its outer neighbour in a lattice plane, passes every per-triangle test
-    // but makes the surface overlap itself.
+    // The triangles of `gone` move.  Each must keep its orientation and not
+    // become a worse sliver than it was (below a quality of 1e-4, about 0.25
+    // degree).  And no fold: a moved triangle and a triangle across one of
+    // its edges must not face (nearly) opposite ways.  Squashing a tiny
+    // component (an octahedron around one lattice point) flat, or turning a
+    // triangle onto its outer neighbour in a lattice plane, passes every
+    // per-triangle test but makes the surface overlap itself.
     star_after.clear();
     moved_flags.clear();
     for(std::size_t x = first[row_keep]; x < first[row_keep + 1]; ++x)
@@ -264,12 +244,14 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
         moved_flags.push_back(0);
       }
     }
-    for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
+    bool ok = true;
+    for(std::size_t x = first[row_gone]; x < first[row_gone + 1] && ok; ++x)
     {
       const std::size_t t = incident[x];
       if(deleted[t] || t == edge_triangles[0] || t == edge_triangles[1])
         continue;
-      Triangle moved = triangles[t];
+      const Triangle& before = triangles[t];
+      Triangle moved = before;
       std::array<std::size_t, 2> outer{{0, 0}};
       int o = 0;
       for(Index& w : moved)
@@ -277,6 +259,11 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
           w = Index(keep);
         else if(o < 2)
           outer[o++] = w;
+      const Vector_3d &b0 = points[before[0]], &b1 = points[before[1]], &b2 = points[before[2]];
+      const Vector_3d &a0 = points[moved[0]], &a1 = points[moved[1]], &a2 = points[moved[2]];
+      const double q1 = triangle_quality(a0, a1, a2);
+      ok = dot3(triangle_normal(b0, b1, b2), triangle_normal(a0, a1, a2)) > 0 &&
+           (q1 > 1e-4 || q1 >= triangle_quality(b0, b1, b2)) && q1 > degenerate_quality;
       star_after.push_back(moved);
       moved_flags.push_back(1);
       // The triangle across the outer edge (it has a row: a neighbour of gone).
@@ -292,7 +279,7 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
         }
       }
     }
-    if(most_opposite_neighbours(points, star_after, moved_flags) < max_fold_cosine)
+    if(!ok || most_opposite_neighbours(points, star_after, moved_flags) < max_fold_cosine)
       continue;
     for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
       for(Index& w : triangles[incident[x]])
