@@ -19,6 +19,7 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Collapse_short_edges.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Resolution_check.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Release_free_memory.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
 
@@ -1004,10 +1005,11 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
     else
       builder.compute_plain_triangles(work, progress.part(0.8, 0.98));
     builder.release_planes();
+    release_free_memory(); // before the sliver passes allocate their tables
     if(record_meshes)
       soup_features.vertex_meshes.resize(points.size(), Builder::no_mesh); // the feature vertices
     if(sliver > 0)
-      statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges(
+      statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges<ConcurrencyTag>(
           points, work, edge_vertices, sliver * lattice.spacing(), soup_features.crease_edges,
           soup_features.corner_vertices, record_meshes ? &soup_features.vertex_meshes : nullptr);
     if constexpr(std::is_same<Triangle, Work_triangle>::value)

@@ -20,7 +20,9 @@
 // Feature vertices are never moved.  In one pass each vertex takes part in
 // at most one collapse, so the order of the collapses (sorted edges) cannot
 // matter more than one level, and the pass is O(triangles); a few passes
-// are made.
+// are made.  A pass after the first tries only the edges near the previous
+// pass's collapses (elsewhere nothing it reads has changed, so it would
+// refuse them again), and the points are renumbered once, at the end.
 
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_vertex.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Sliver_flips.h>
@@ -74,15 +76,23 @@ double most_opposite_neighbours(const std::vector<Vector_3d>& points, const std:
   return smallest;
 }
 
+/// What the passes of `collapse_short_edges()` share, one flag per point.
+struct Collapse_marks
+{
+  std::vector<unsigned char> removed; // merged into another point
+  // In: try only the edges with an end flagged (all edges if empty).  Out:
+  // the ends of every edge whose collapse may have become possible, i.e.
+  // the vertices of the triangles that share a vertex with a triangle the
+  // pass moved (empty if it collapsed nothing).
+  std::vector<unsigned char> near_collapse;
+};
+
 /// One pass of `collapse_short_edges()`: each vertex takes part in at most
-/// one collapse.  `first_feature_vertex` is updated with the renumbering, and
-/// `labels` (one per point, if not null) is compacted with the points.
+/// one collapse.  Merged points stay in `points` (flagged in
+/// `marks.removed`), and the deleted triangles are removed.
 template <typename Triangle>
-std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
-                                             std::size_t& first_feature_vertex, double max_length,
-                                             std::vector<std::array<std::size_t, 2>>& creases,
-                                             std::vector<std::size_t>& corners,
-                                             std::vector<std::uint8_t>* labels = nullptr)
+std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
+                                      std::size_t first_feature_vertex, double max_length, Collapse_marks& marks)
 {
   typedef std::array<std::size_t, 2> Edge;
   typedef typename Triangle::value_type Index;
@@ -92,18 +102,20 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
   if(3 * triangles.size() > std::size_t((std::numeric_limits<Triangle_index>::max)()))
     return 0;
   const double max_squared = max_length * max_length;
+  const std::vector<unsigned char>& tried = marks.near_collapse;
   std::vector<Edge> candidates;
   for(const auto& t : triangles)
     for(int i = 0; i < 3; ++i)
     {
       const std::size_t a = t[i], b = t[(i + 1) % 3];
-      if(a < b && b < first_feature_vertex)
+      if(a < b && b < first_feature_vertex && (tried.empty() || tried[a] || tried[b]))
       {
         const Vector_3d d = sub3(points[a], points[b]);
         if(dot3(d, d) < max_squared)
           candidates.push_back({{a, b}});
       }
     }
+  marks.near_collapse.clear();
   if(candidates.empty())
     return 0;
   std::sort(candidates.begin(), candidates.end());
@@ -174,6 +186,7 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   };
+  std::vector<unsigned char> moved_vertex(nv, 0); // a vertex of a moved triangle
   std::size_t collapses = 0;
   for(const Edge& e : candidates)
   {
@@ -282,47 +295,37 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
     if(!ok || most_opposite_neighbours(points, star_after, moved_flags) < max_fold_cosine)
       continue;
     for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
-      for(Index& w : triangles[incident[x]])
-        if(w == gone)
-          w = Index(keep);
+      if(!deleted[incident[x]])
+        for(Index& w : triangles[incident[x]])
+        {
+          if(w == gone)
+            w = Index(keep);
+          moved_vertex[w] = 1;
+        }
     deleted[edge_triangles[0]] = deleted[edge_triangles[1]] = 1;
-    touched[gone] = 2; // removed below
+    touched[gone] = 2;
     touched[keep] = 1;
+    marks.removed[gone] = 1;
     ++collapses;
   }
   if(collapses == 0)
     return 0;
-  // Renumber: the removed points are the `touched == 2` ones.
-  std::vector<std::size_t> new_index(nv);
-  std::size_t next = 0;
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    new_index[v] = next;
-    if(touched[v] != 2)
-    {
-      if(labels != nullptr)
-        (*labels)[next] = (*labels)[v];
-      points[next++] = points[v];
-    }
-  }
-  points.resize(next);
-  if(labels != nullptr)
-    labels->resize(next);
+  // The next pass tries the edges with an end within one triangle of a
+  // moved triangle: every other candidate reads (its two stars, and the
+  // triangles across the outer edges of the star that moves) only
+  // triangles and points this pass left alone.
+  marks.near_collapse.assign(nv, 0);
   std::size_t out = 0;
   for(std::size_t t = 0; t < triangles.size(); ++t)
     if(!deleted[t])
     {
-      Triangle tr = triangles[t];
-      for(Index& v : tr)
-        v = Index(new_index[v]);
+      const Triangle& tr = triangles[t];
+      if(moved_vertex[tr[0]] || moved_vertex[tr[1]] || moved_vertex[tr[2]])
+        for(const std::size_t v : tr)
+          marks.near_collapse[v] = 1;
       triangles[out++] = tr;
     }
   triangles.resize(out);
-  for(auto& c : creases)
-    c = {{new_index[c[0]], new_index[c[1]]}};
-  for(auto& c : corners)
-    c = new_index[c];
-  first_feature_vertex = first_feature_vertex < nv ? new_index[first_feature_vertex] : next;
   return collapses;
 }
 
@@ -335,29 +338,58 @@ std::size_t collapse_short_edges_once(std::vector<Vector_3d>& points, std::vecto
 /// short edges, and one pass moves each vertex once.  Then the remaining
 /// slivers are flipped away where the surface is nearly flat
 /// (`flip_slivers()`, the crease edges kept).  `labels` (one per point, if
-/// not null) follows the renumbering.
-template <typename Triangle>
+/// not null) follows the renumbering.  `ConcurrencyTag` is for the
+/// flips' corner table; the collapses are sequential.
+template <typename ConcurrencyTag = Sequential_tag, typename Triangle>
 std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                         std::size_t first_feature_vertex, double max_length,
                                         std::vector<std::array<std::size_t, 2>>& creases,
                                         std::vector<std::size_t>& corners,
                                         std::vector<std::uint8_t>* labels = nullptr)
 {
+  typedef typename Triangle::value_type Index;
+  Collapse_marks marks;
+  marks.removed.assign(points.size(), 0);
   std::size_t total = 0;
   for(int pass = 0; pass < max_collapse_passes; ++pass)
   {
-    const std::size_t collapses =
-        collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, creases, corners, labels);
+    const std::size_t collapses = collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, marks);
     total += collapses;
     if(collapses == 0)
       break;
+  }
+  if(total > 0)
+  {
+    // Renumber: the removed points go, the others keep their order.
+    std::vector<std::size_t> new_index(points.size());
+    std::size_t next = 0;
+    for(std::size_t v = 0; v < points.size(); ++v)
+    {
+      new_index[v] = next;
+      if(!marks.removed[v])
+      {
+        if(labels != nullptr)
+          (*labels)[next] = (*labels)[v];
+        points[next++] = points[v];
+      }
+    }
+    points.resize(next);
+    if(labels != nullptr)
+      labels->resize(next);
+    for(Triangle& tr : triangles)
+      for(Index& v : tr)
+        v = Index(new_index[v]);
+    for(auto& c : creases)
+      c = {{new_index[c[0]], new_index[c[1]]}};
+    for(auto& c : corners)
+      c = new_index[c];
   }
   // What a collapse cannot remove (caps, needles at feature vertices):
   // Lawson flips between nearly coplanar triangles, moving the surface by
   // at most a fifth of the sliver length (Sliver_flips.h).
   Sliver_flip_settings flip;
   flip.max_deviation = 0.2 * max_length;
-  flip_slivers(points, triangles, creases, flip);
+  flip_slivers<ConcurrencyTag>(points, triangles, creases, flip);
   return total;
 }
 

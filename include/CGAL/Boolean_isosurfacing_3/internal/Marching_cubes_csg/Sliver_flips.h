@@ -22,15 +22,17 @@
 // order, with at most `4 * triangles` flips, on a corner table (the
 // opposite corner of each corner: 4 bytes per corner).
 
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_vertex.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -68,88 +70,129 @@ struct Sliver_flip_settings
 /// false if the soup is not a closed, consistently oriented 2-manifold.
 /// A corner table is 3 indices per triangle: the hash table of edges it
 /// replaces needed about 48 bytes per edge (4.7 GB at 2048 cells).  The
-/// vertices' corner lists it is built from take at most `max_star_corners`
-/// entries at a time.
-template <typename Index, typename Triangle>
+/// vertices' corner lists it is built from take about `max_star_corners`
+/// entries at a time (ranges of a power of two vertices), the ranges in
+/// parallel with `Parallel_tag`.
+template <typename ConcurrencyTag = Sequential_tag, typename Index, typename Triangle>
 bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>& triangles, std::vector<Index>& opposite,
-                      std::size_t max_star_corners = std::size_t(1) << 25)
+                      std::size_t max_star_corners = std::size_t(1) << 22)
 {
   const std::size_t corners = 3 * triangles.size();
   const Index none = Index(-1);
-  for(const auto& t : triangles)
-    for(std::size_t v : t)
-      if(v >= number_of_points)
-        return false;
   const auto vertex = [&](std::size_t c) { return std::size_t(triangles[c / 3][c % 3]); };
   const auto next = [](std::size_t c) { return c - c % 3 + (c + 1) % 3; };
   const auto previous = [](std::size_t c) { return c - c % 3 + (c + 2) % 3; };
   opposite.assign(corners, none);
   // The corners of each vertex (compressed rows), built for one range of
-  // vertices at a time: the rows of all vertices at once would be another
-  // 4 bytes a corner at the memory peak of the feature path.  The ranges
-  // only change the order of the work, not the table.
-  const std::size_t ranges = (std::max)(std::size_t(1), (corners + max_star_corners - 1) / max_star_corners);
-  std::vector<Index> first, star, fill;
-  for(std::size_t r = 0; r < ranges; ++r)
-  {
-    const std::size_t low = number_of_points * r / ranges, high = number_of_points * (r + 1) / ranges;
-    first.assign(high - low + 1, 0);
-    for(const auto& t : triangles)
-      for(std::size_t v : t)
+  // 2^shift vertices at a time: the rows of all vertices at once would be
+  // another 4 bytes a corner at the memory peak of the feature path.  The
+  // ranges only change the order of the work, not the table.  Each range
+  // reads only the triangles from the first to the last that has a vertex
+  // in it: the vertices of Marching Cubes are numbered plane by plane and
+  // its triangles layer by layer, so that window is narrow for all but the
+  // few feature vertices, appended at the end.
+  unsigned shift = 0;
+  while(shift < 40 && (std::size_t(2) << shift) * corners <= max_star_corners * number_of_points)
+    ++shift;
+  const std::size_t ranges = (number_of_points >> shift) + 1;
+  std::vector<std::size_t> window_begin(ranges, triangles.size()), window_end(ranges, 0);
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(std::size_t v : triangles[t])
+    {
+      if(v >= number_of_points)
+        return false;
+      const std::size_t r = v >> shift;
+      window_begin[r] = (std::min)(window_begin[r], t);
+      window_end[r] = t + 1;
+    }
+  std::atomic<bool> manifold(true);
+  concurrent_for<ConcurrencyTag>(ranges, [&](std::size_t r) {
+    const std::size_t low = r << shift, high = (std::min)(number_of_points, (r + 1) << shift);
+    if(window_begin[r] >= window_end[r] || !manifold)
+      return; // no triangle has a vertex in this range, or no table
+    std::vector<Index> first(high - low + 1, 0);
+    for(std::size_t t = window_begin[r]; t < window_end[r]; ++t)
+      for(std::size_t v : triangles[t])
         if(v >= low && v < high)
           ++first[v - low + 1];
     for(std::size_t v = 0; v < high - low; ++v)
       first[v + 1] += first[v];
-    star.resize(first.back());
-    fill.assign(first.begin(), first.end() - 1);
-    for(std::size_t c = 0; c < corners; ++c)
+    std::vector<Index> star(first.back());
+    std::vector<Index> fill(first.begin(), first.end() - 1);
+    for(std::size_t c = 3 * window_begin[r]; c < 3 * window_end[r]; ++c)
     {
       const std::size_t v = vertex(c);
       if(v >= low && v < high)
         star[fill[v - low]++] = Index(c);
     }
-    for(std::size_t c = 0; c < corners; ++c)
+    // Both halves of an edge v -> w and w -> v pass through v, so the twin
+    // of each edge leaving v is found in v's own star: each triangle is
+    // read once per corner, not once per corner and neighbour.  `link`
+    // holds, for each corner of v, the vertices after and before v.
+    std::vector<std::array<std::size_t, 2>> link;
+    for(std::size_t v = 0; v < high - low; ++v)
     {
-      // The edge v -> w of corner c's triangle faces previous(c); its twin
-      // w -> v must be in exactly one other triangle (a second v -> w would
-      // make the twin's own search find two).
-      const std::size_t w = vertex(next(c));
-      if(w < low || w >= high)
-        continue;
-      const std::size_t v = vertex(c);
-      std::size_t twin = corners;
-      for(Index x = first[w - low]; x < first[w - low + 1]; ++x)
-        if(vertex(next(star[x])) == v)
+      link.clear();
+      for(Index x = first[v]; x < first[v + 1]; ++x)
+        link.push_back({{vertex(next(star[x])), vertex(previous(star[x]))}});
+      for(std::size_t k = 0; k < link.size(); ++k)
+      {
+        // The edge v -> w of corner c's triangle faces previous(c); its twin
+        // w -> v must be in exactly one other triangle, where w comes before
+        // v and the twin faces the corner after v.  (A second v -> w makes
+        // the search from w find two.)
+        const std::size_t w = link[k][0];
+        std::size_t twin = link.size();
+        for(std::size_t j = 0; j < link.size(); ++j)
+          if(link[j][1] == w)
+          {
+            if(twin != link.size())
+              twin = link.size() + 1;
+            else
+              twin = j;
+          }
+        if(twin >= link.size())
         {
-          if(twin != corners)
-            return false;
-          twin = star[x];
+          manifold = false;
+          return;
         }
-      if(twin == corners)
-        return false;
-      opposite[previous(c)] = Index(previous(twin));
+        // Written by this range only: corner previous(c) belongs to v.
+        opposite[previous(star[first[v] + k])] = Index(next(star[first[v] + twin]));
+      }
     }
-  }
-  return true;
+  });
+  return manifold;
 }
 
 /// Flips edges of the closed, oriented triangle soup to raise its smallest
 /// angles (see above).  `protected_edges` (vertex pairs) are never flipped.
 /// Returns the number of flips.
-template <typename Index, typename Triangle>
+template <typename Index, typename ConcurrencyTag, typename Triangle>
 std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                       const std::vector<std::array<std::size_t, 2>>& protected_edges,
                                       const Sliver_flip_settings& settings)
 {
   std::vector<Index> opposite;
-  if(!opposite_corners(points.size(), triangles, opposite))
+  if(!opposite_corners<ConcurrencyTag>(points.size(), triangles, opposite))
     return 0; // not a closed 2-manifold: leave it alone
   const auto key = [](std::size_t a, std::size_t b) {
     return a < b ? (std::uint64_t(a) << 32) | std::uint64_t(b) : (std::uint64_t(b) << 32) | std::uint64_t(a);
   };
-  std::unordered_set<std::uint64_t> fixed;
+  // The protected edges, sorted, and a flag on their vertices: most edges
+  // tried have an end off every crease, and need no search.
+  std::vector<std::uint64_t> fixed;
+  std::vector<bool> on_fixed(points.size(), false);
   for(const auto& e : protected_edges)
-    fixed.insert(key(e[0], e[1]));
+  {
+    fixed.push_back(key(e[0], e[1]));
+    for(const std::size_t v : e)
+      if(v < on_fixed.size())
+        on_fixed[v] = true;
+  }
+  std::sort(fixed.begin(), fixed.end());
+  const auto is_fixed = [&](std::size_t a, std::size_t b) {
+    return on_fixed[a] && on_fixed[b] && std::binary_search(fixed.begin(), fixed.end(), key(a, b));
+  };
   const auto vertex = [&](std::size_t c) { return triangles[c / 3][c % 3]; };
   const auto next = [](std::size_t c) { return c - c % 3 + (c + 1) % 3; };
   const auto previous = [](std::size_t c) { return c - c % 3 + (c + 2) % 3; };
@@ -198,7 +241,7 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
     // their cotangents to less than 0.
     if(!(cotangent_at(c, a, b) + cotangent_at(d, b, a) < -1e-9))
       return;
-    if((!fixed.empty() && fixed.count(key(a, b))) || adjacent(c1, d))
+    if(is_fixed(a, b) || adjacent(c1, d))
       return;
     const Vector_3d n1 = unit(triangle_normal(points[a], points[b], points[c]));
     const Vector_3d n2 = unit(triangle_normal(points[b], points[a], points[d]));
@@ -271,16 +314,17 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
 /// Flips edges of the closed, oriented triangle soup to raise its smallest
 /// angles (see above), on a corner table of 32-bit indices where they
 /// suffice.  `protected_edges` (vertex pairs) are never flipped.  Returns
-/// the number of flips (0 if the soup is not a closed 2-manifold).
-template <typename Triangle>
+/// the number of flips (0 if the soup is not a closed 2-manifold).  The
+/// flips are sequential; `ConcurrencyTag` is for the corner table.
+template <typename ConcurrencyTag = Sequential_tag, typename Triangle>
 std::size_t flip_slivers(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                          const std::vector<std::array<std::size_t, 2>>& protected_edges,
                          const Sliver_flip_settings& settings)
 {
   if(3 * triangles.size() < std::size_t(std::numeric_limits<std::uint32_t>::max()) &&
      points.size() < std::size_t(std::numeric_limits<std::uint32_t>::max()))
-    return flip_slivers_with_corners<std::uint32_t, Triangle>(points, triangles, protected_edges, settings);
-  return flip_slivers_with_corners<std::size_t, Triangle>(points, triangles, protected_edges, settings);
+    return flip_slivers_with_corners<std::uint32_t, ConcurrencyTag>(points, triangles, protected_edges, settings);
+  return flip_slivers_with_corners<std::size_t, ConcurrencyTag>(points, triangles, protected_edges, settings);
 }
 
 } // namespace Marching_cubes_csg
