@@ -178,7 +178,7 @@ void marching_cubes_csg_slab_range(const Regular_lattice_3& lattice, const Trian
                                                   Lattice_classifier_3::default_max_memory_bytes);
   typedef internal::Marching_cubes_csg_builder<ConcurrencyTag> Builder;
   const std::size_t reserved = sub.number_of_points(2) * Builder::bytes_per_plane();
-  const Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
+  Lattice_classifier_3 classifier = Lattice_classifier_3::classify_triangles<ConcurrencyTag>(
       std::move(triangles), number_of_meshes, sub, max_memory, reserved, internal::Progress());
   internal::Marching_cubes_csg::Feature_settings plain;
   plain.enabled = false;
@@ -192,6 +192,9 @@ void marching_cubes_csg_slab_range(const Regular_lattice_3& lattice, const Trian
   start = std::chrono::steady_clock::now();
   builder.compute_vertices(range.points, internal::Progress());
   range.statistics.seconds_edges = internal::seconds_since(start);
+  // As marching_cubes_csg() does: the triangles need the vertices' numbering,
+  // not the crossings, which are most of the memory of a fine lattice.
+  classifier.release_crossings();
   start = std::chrono::steady_clock::now();
   builder.compute_plain_triangles(range.triangles, internal::Progress());
   range.statistics.seconds_triangulation = internal::seconds_since(start);
