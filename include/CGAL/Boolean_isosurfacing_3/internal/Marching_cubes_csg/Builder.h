@@ -215,7 +215,9 @@ public:
 
   // With sharp features: `points` (the edge vertices) gets the feature
   // vertices appended, and `soup_creases`, `soup_corners` the crease edges and
-  // corner vertices.
+  // corner vertices.  The planes are released (release_planes()) once the
+  // cubes are triangulated: the merge of the chunks, the memory peak of the
+  // path, does not need them.
   template <typename Triangle>
   void compute_feature_triangles(std::vector<std::array<double, 3>>& points, std::vector<Triangle>& triangles,
                                  std::vector<std::array<std::size_t, 2>>& soup_creases,
@@ -240,6 +242,8 @@ public:
             triangulate_feature_layers(layers * c / chunks, layers * (c + 1) / chunks, points, buffers[c]);
           },
           progress);
+      release_planes();
+      release_free_memory();
       for(const auto& b : buffers)
       {
         statistics.plain_feature_polygons += b.plain.no_point + b.plain.folded;
@@ -1005,7 +1009,8 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
     else
       builder.compute_plain_triangles(work, progress.part(0.8, 0.98));
     builder.release_planes();
-    release_free_memory(); // before the sliver passes allocate their tables
+    if(!features.enabled)
+      release_free_memory(); // before the sliver passes allocate their tables
     if(record_meshes)
       soup_features.vertex_meshes.resize(points.size(), Builder::no_mesh); // the feature vertices
     if(sliver > 0)
