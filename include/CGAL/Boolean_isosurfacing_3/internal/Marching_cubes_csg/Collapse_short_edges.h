@@ -21,8 +21,8 @@
 // at most one collapse, so the order of the collapses (sorted edges) cannot
 // matter more than one level, and the pass is O(triangles); a few passes
 // are made.  A pass after the first tries only the edges near the previous
-// pass's collapses (elsewhere nothing it reads has changed, so it would
-// refuse them again), and the points are renumbered once, at the end.
+// pass's collapses (elsewhere nothing it reads has changed since it refused
+// them), and the points are renumbered once, at the end.
 
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_vertex.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Sliver_flips.h>
@@ -83,7 +83,7 @@ struct Collapse_marks
   // In: try only the edges with an end flagged (all edges if empty).  Out:
   // the ends of every edge whose collapse may have become possible, i.e.
   // the vertices of the triangles that share a vertex with a triangle the
-  // pass moved (empty if it collapsed nothing).
+  // pass moved (empty if it collapsed nothing: the passes stop).
   std::vector<unsigned char> near_collapse;
 };
 
@@ -313,7 +313,8 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
   // The next pass tries the edges with an end within one triangle of a
   // moved triangle: every other candidate reads (its two stars, and the
   // triangles across the outer edges of the star that moves) only
-  // triangles and points this pass left alone.
+  // triangles and points this pass left alone.  (An edge that a collapse
+  // of the next pass itself makes collapsible waits one more pass.)
   marks.near_collapse.assign(nv, 0);
   std::size_t out = 0;
   for(std::size_t t = 0; t < triangles.size(); ++t)
