@@ -243,7 +243,6 @@ public:
           },
           progress);
       release_planes();
-      release_free_memory();
       for(const auto& b : buffers)
       {
         statistics.plain_feature_polygons += b.plain.no_point + b.plain.folded;
@@ -269,10 +268,15 @@ public:
 
   // Frees the per-plane vertex numbering and states: what the triangles
   // needed, and nothing after them does (the sliver passes need their memory).
+  // Many small vectors filled by several threads: the heap keeps them
+  // resident unless asked to give them back.  A second call does nothing.
   void release_planes()
   {
+    if(m_changes.empty() && m_planes.empty())
+      return;
     std::vector<Plane_changes>().swap(m_changes);
     std::vector<Plane_rows>().swap(m_planes);
+    release_free_memory();
   }
 
   // Plain Marching Cubes, into `triangles` (whose elements are arrays of
@@ -1008,9 +1012,7 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
                                         statistics, progress.part(0.8, 0.98));
     else
       builder.compute_plain_triangles(work, progress.part(0.8, 0.98));
-    builder.release_planes();
-    if(!features.enabled)
-      release_free_memory(); // before the sliver passes allocate their tables
+    builder.release_planes(); // before the sliver passes allocate their tables
     if(record_meshes)
       soup_features.vertex_meshes.resize(points.size(), Builder::no_mesh); // the feature vertices
     if(sliver > 0)

@@ -303,8 +303,7 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
           moved_vertex[w] = 1;
         }
     deleted[edge_triangles[0]] = deleted[edge_triangles[1]] = 1;
-    touched[gone] = 2;
-    touched[keep] = 1;
+    touched[gone] = touched[keep] = 1; // in no other collapse of this pass
     marks.removed[gone] = 1;
     ++collapses;
   }
