@@ -14,7 +14,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Random.h>
@@ -337,4 +344,87 @@ TEST(Topology, Merged_range_scans_unoriented_noisy)
     print(name, m, 100 * statistics.cell_size / biso_samples::bounding_diagonal(source));
     check_closed_reconstruction(m, shape.genus, 1.0, name);
   }
+}
+
+// Sharp features from input normals (issue 18): a box turned off the lattice
+// axes, sampled with its exact face normals.  With the input normals' planes
+// the contour stays closed and 2-manifold, lies nearer the box than with
+// Hoppe's PCA planes (which round every edge), and the crease vertices pull
+// it onto the box's edges, nearer than plain Marching Cubes.  The corners are
+// not recovered: each pokes into a cube whose 8 lattice points are all
+// outside, where Marching Cubes has no polygon (contouring.md).
+TEST(Sharp_features, Box_samples_with_normals_keep_the_edges)
+{
+  Mesh box;
+  const double c = std::cos(0.5), s = std::sin(0.5), c2 = std::cos(0.3), s2 = std::sin(0.3);
+  // Rotation about z by 0.5 rad, then about x by 0.3 rad.
+  const auto turn = [&](double x, double y, double z) {
+    const double x1 = c * x - s * y, y1 = s * x + c * y;
+    return Point_3(x1, c2 * y1 - s2 * z, s2 * y1 + c2 * z);
+  };
+  std::array<Point_3, 8> corners;
+  for(int k = 0; k < 8; ++k)
+    corners[k] = turn((k & 1) ? 1.0 : 0.0, (k & 2) ? 0.7 : 0.0, (k & 4) ? 0.5 : 0.0);
+  CGAL::make_hexahedron(corners[0], corners[1], corners[3], corners[2], corners[6], corners[4], corners[5],
+                        corners[7], box);
+  PMP::triangulate_faces(box);
+  if(PMP::volume(box) < 0)
+    PMP::reverse_face_orientations(box);
+  const Samples samples = sample_mesh(box, 20000, 5);
+  std::vector<std::size_t> indices(samples.points.size());
+  for(std::size_t i = 0; i < indices.size(); ++i)
+    indices[i] = i;
+  const auto pm = CGAL::make_property_map(samples.points);
+  const auto nm = CGAL::make_property_map(samples.normals);
+  struct Run
+  {
+    double hausdorff = 0, edge_median = 0; // in cells
+    bool closed = false;
+    BI::Contouring_statistics stats;
+  };
+  const auto run = [&](const auto& field, bool features) {
+    std::vector<Point_3> points;
+    std::vector<Triangle> triangles;
+    Run result;
+    result.stats = BI::contour_signed_distance(BI::contouring_lattice(field), field, points, triangles,
+                                               BI::parameters::sharp_features(features));
+    const double r = result.stats.cell_size;
+    const biso_samples::Measure m = biso_samples::measure(points, triangles, &box);
+    result.closed = m.closed && m.non_manifold_vertices == 0 && m.components == 1 && m.euler == 2;
+    result.hausdorff = m.hausdorff_percent / 100 * biso_samples::bounding_diagonal(box) / r;
+    // The median distance from the box's 12 edges to the output.
+    typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+    CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(m.mesh).first, faces(m.mesh).second, m.mesh);
+    tree.accelerate_distance_queries();
+    std::vector<double> distances;
+    for(int k = 0; k < 8; ++k)
+      for(int bit : {1, 2, 4})
+        if(!(k & bit))
+          for(int i = 0; i <= 100; ++i)
+            distances.push_back(
+              std::sqrt(tree.squared_distance(corners[k] + (corners[k | bit] - corners[k]) * (i / 100.0))) / r);
+    std::sort(distances.begin(), distances.end());
+    result.edge_median = distances[distances.size() / 2];
+    return result;
+  };
+  const BI::Tangent_plane_signed_distance_3<K> with_normals(indices, CGAL::parameters::point_map(pm).normal_map(nm));
+  const BI::Tangent_plane_signed_distance_3<K> without_normals(indices, CGAL::parameters::point_map(pm));
+  ASSERT_TRUE(with_normals.uses_input_normals());
+  ASSERT_FALSE(without_normals.uses_input_normals());
+  const Run sharp = run(with_normals, true), plain = run(with_normals, false), hoppe = run(without_normals, false);
+  std::cout << "box, in cells: Hausdorff / median distance from the edges: sharp " << sharp.hausdorff << " / "
+            << sharp.edge_median << ", plain MC " << plain.hausdorff << " / " << plain.edge_median
+            << ", Hoppe's planes " << hoppe.hausdorff << " / " << hoppe.edge_median << "; "
+            << sharp.stats.feature_creases << " crease, " << sharp.stats.feature_corners << " corner vertices, "
+            << sharp.stats.feature_flips << " flips\n";
+  EXPECT_TRUE(sharp.closed);
+  EXPECT_TRUE(plain.closed);
+  EXPECT_TRUE(hoppe.closed);
+  EXPECT_GT(sharp.stats.feature_creases, 100u);
+  EXPECT_GT(sharp.stats.feature_flips, 0u);
+  EXPECT_EQ(plain.stats.feature_creases + plain.stats.feature_corners, 0u);
+  EXPECT_LT(sharp.hausdorff, 1.2);
+  EXPECT_GT(hoppe.hausdorff, 1.5 * sharp.hausdorff);
+  EXPECT_LT(sharp.edge_median, 0.75 * plain.edge_median);
+  EXPECT_LT(plain.edge_median, 0.75 * hoppe.edge_median);
 }

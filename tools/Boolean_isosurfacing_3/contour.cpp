@@ -3,7 +3,7 @@
 // (the contour-tracing assignment, [ContourTracing] in the manual's references).
 //
 //   contour [FILE|-] [-o out.tris|out.off|out.ply|out.obj|out.stl] [--spacing h | --cells N] [--k K]
-//           [--rho R] [--delta D] [--hoppe] [--max-jump J]
+//           [--rho R] [--delta D] [--hoppe] [--max-jump J] [--no-features]
 //   and the common options of cli.h (--threads, --sequential, --json, --quiet, --version)
 //
 // FILE: .pts (the seed's format, or Hoppe's A3d points), .xyz, .pwn, .ply;
@@ -54,6 +54,7 @@ using biso_tools::Tool;
 const char* description =
     "contour: oriented (or unoriented) point samples -> closed triangle mesh (Hoppe et al. 1992)\n"
     "usage: contour [FILE|-] [-o OUT] [--spacing h | --cells N] [--k K] [--rho R] [--delta D] [--hoppe] [--max-jump J]\n"
+    "               [--no-features]\n"
     "  FILE: .pts (x y z [nx ny nz] per line), .xyz, .pwn or .ply; '-' reads .pts from standard input; with no\n"
     "  FILE standard input is read too, unless it is a terminal (then this is a usage error: give FILE, or '-'\n"
     "  to type the points, ended by Ctrl-D).\n"
@@ -76,6 +77,7 @@ struct Options
   std::optional<double> rho, delta;
   std::optional<double> max_jump; // in cells; the library's default without it
   bool hoppe_only = false;        // --hoppe, or --max-jump: Hoppe's f alone
+  bool no_features = false;       // --no-features: plain Marching Cubes with input normals too
   std::size_t k = 15;
 };
 
@@ -104,6 +106,9 @@ void add_options(Tool& tool, Options& o, Option_text& t)
                  "with Hoppe's f alone (implies --hoppe): skip cubes where f jumps by more than J cells (>= 0; inf = "
                  "Hoppe's plain rule; default 3 cells + 2 delta)")
       ->type_name("J");
+  app.add_flag("--no-features", o.no_features,
+               "with input normals, no crease and corner vertices (plain Marching Cubes triangles); without "
+               "input normals there are none anyway");
 }
 
 // \throws Usage_error.
@@ -271,13 +276,16 @@ BI::Contouring_statistics contour(Tool& tool, const Options& options, const BI::
 {
   const std::function<bool(double)> progress = tool.progress("contouring");
   const bool consistent = !options.hoppe_only;
+  const bool features = field.uses_input_normals() && !options.no_features;
   if(options.max_jump)
     return BI::contour_signed_distance<ConcurrencyTag>(
         lattice, field, points, triangles,
-        BI::parameters::maximum_jump(*options.max_jump * lattice.spacing(), BI::parameters::consistent_signs(consistent))
+        BI::parameters::maximum_jump(*options.max_jump * lattice.spacing(),
+                                     BI::parameters::consistent_signs(consistent, BI::parameters::sharp_features(features)))
             .callback(progress));
-  return BI::contour_signed_distance<ConcurrencyTag>(lattice, field, points, triangles,
-                                                     BI::parameters::consistent_signs(consistent).callback(progress));
+  return BI::contour_signed_distance<ConcurrencyTag>(
+      lattice, field, points, triangles,
+      BI::parameters::consistent_signs(consistent, BI::parameters::sharp_features(features)).callback(progress));
 }
 
 void report_field(Tool& tool, const Field& field)
@@ -321,7 +329,10 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_statistic
       << report.discontinuous_cubes << " skipped for a jump of f, " << report.removed_closed_components
       << " closed pieces smaller than rho removed)\n"
       << "signs: " << (report.consistent_signs ? "consistent (winding number)" : "Hoppe's f alone") << ", "
-      << report.removed_membranes << " membranes across wide openings removed\n";
+      << report.removed_membranes << " membranes across wide openings removed\n"
+      << "planes: " << (field.uses_input_normals() ? "the input normals' (sharp features kept)" : "Hoppe's PCA planes")
+      << ", " << report.feature_creases << " crease and " << report.feature_corners << " corner vertices, "
+      << report.feature_flips << " edges flipped to join them\n";
   out << "triangles: " << triangles << ", vertices: " << vertices << "\n";
   biso_tools::Json_object& j = tool.summary();
   j.set("k", field.number_of_neighbors());
@@ -333,6 +344,9 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_statistic
                                                     double(report.number_of_cells[2])}));
   j.set("consistent_signs", report.consistent_signs);
   j.set("removed_membranes", report.removed_membranes);
+  j.set("input_normal_planes", field.uses_input_normals());
+  j.set("feature_creases", report.feature_creases);
+  j.set("feature_corners", report.feature_corners);
   j.set("vertices", vertices);
   j.set("faces", triangles);
 }

@@ -41,6 +41,9 @@ struct Contouring_statistics : Algorithm_statistics
   /// membranes are removed.
   bool consistent_signs = false;
   std::size_t removed_membranes = 0;             ///< surface pieces far from every sample, spanning a wide opening, removed
+  std::size_t feature_creases = 0;               ///< polygons fanned around a crease vertex (sharp features)
+  std::size_t feature_corners = 0;               ///< ... around a corner vertex
+  std::size_t feature_flips = 0;                 ///< face segments flipped to join feature vertices into lines
   /// No triangle came out: f changes sign in no cube reached from the samples
   /// (or only in skipped ones).  `contour_point_set` throws `Empty_contour_error`.
   bool empty_output = false;

@@ -45,6 +45,7 @@
 #include <vector>
 #include <CGAL/Boolean_isosurfacing_3/internal/Contouring/Cube_rules.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Contouring/Repair.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
 
 namespace CGAL {
 namespace Boolean_isosurfacing {
@@ -132,6 +133,19 @@ struct Has_consistent_value<
                         std::declval<const typename Field::Point_3&>()))),
                      decltype(double(std::declval<const Field&>().distance_to_samples(
                         std::declval<const typename Field::Point_3&>())))>> : std::true_type
+{};
+
+// Whether the field has `nearest_plane(p)` (the plane its value uses at p)
+// and `uses_input_normals()`, as `Tangent_plane_signed_distance_3` has: those
+// planes are the Hermite data of the sharp features.
+template <typename Field, typename = void>
+struct Has_tangent_planes : std::false_type
+{};
+template <typename Field>
+struct Has_tangent_planes<
+  Field, std::void_t<decltype(std::declval<const Field&>().nearest_plane(
+                        std::declval<const typename Field::Point_3&>()).second),
+                     decltype(bool(std::declval<const Field&>().uses_input_normals()))>> : std::true_type
 {};
 
 // One line per reason the output lacks the closed-2-manifold guarantee.
@@ -345,6 +359,160 @@ public:
     return next_vertex;
   }
 
+  // As triangulate(), but a polygon whose Hermite normals (the normal of
+  // the tangent plane nearest to each of its edge points) disagree by more
+  // than the feature angle is fanned around a feature vertex (Extended
+  // Marching Cubes, as in the CSG, internal/Marching_cubes_csg/), and the
+  // face segments between neighbouring fans are flipped afterwards so that
+  // the feature vertices join into feature lines.  The boundary of every
+  // cube's patch is the plain one, so the soup stays closed and 2-manifold.
+  template <typename PointOutRange, typename TriangleRange>
+  std::size_t triangulate_with_features(PointOutRange& out_points, TriangleRange& out_triangles,
+                                        const Marching_cubes_csg::Feature_settings& settings)
+  {
+    namespace MC = Marching_cubes_csg;
+    std::sort(surface_cubes.begin(), surface_cubes.end());
+    report.surface_cubes = surface_cubes.size();
+    const Marching_cubes_table& table = Marching_cubes_table::instance();
+    std::unordered_map<std::uint64_t, std::size_t> edge_vertex;
+    edge_vertex.reserve(3 * surface_cubes.size());
+    const std::size_t first_vertex = out_points.size();
+    std::vector<MC::Vector_3d> points, hermite_points, normals; // from first_vertex
+    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<std::size_t> fans;
+    MC::Plain_feature_counts plain;
+    for(const std::uint64_t key : surface_cubes)
+    {
+      const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+      cube_values(c, values); // cached
+      const unsigned code = internal::inside_cube_code(values);
+      const unsigned join = internal::asymptotic_decider_mask(values, code);
+      const unsigned ambiguous = ambiguous_face_mask(code);
+      for(int f = 0; f < 6; ++f)
+        if((ambiguous >> f) & 1u)
+        {
+          ++report.ambiguous_faces;
+          if((join >> f) & 1u)
+            ++report.joined_faces;
+        }
+      auto edge_point = [&](int e) -> MC::Vector_3d {
+        const std::array<int, 2> ends = cube_edge_corners(e);
+        const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
+        const double t = internal::edge_parameter(values[ends[0]], values[ends[1]]);
+        MC::Vector_3d p;
+        for(int a = 0; a < 3; ++a)
+          p[a] = origin[a] + double(c[a] + o0[a]) * r + t * (double(o1[a] - o0[a]) * r);
+        return p;
+      };
+      auto edge_vertex_of = [&](int e) -> std::size_t {
+        const std::array<int, 3> o = cube_edge_origin_offset(e);
+        const std::uint64_t edge_key =
+          4 * internal::lattice_key(c[0] + o[0], c[1] + o[1], c[2] + o[2]) + std::uint64_t(cube_edge_axis(e));
+        auto inserted = edge_vertex.emplace(edge_key, first_vertex + points.size());
+        if(inserted.second)
+        {
+          const MC::Vector_3d p = edge_point(e);
+          const Point_3 q(p[0], p[1], p[2]);
+          const auto plane = field.nearest_plane(q);
+          const MC::Vector_3d normal{
+            {CGAL::to_double(plane.second.x()), CGAL::to_double(plane.second.y()), CGAL::to_double(plane.second.z())}};
+          const double d = CGAL::to_double((q - plane.first) * plane.second);
+          points.push_back(p);
+          normals.push_back(normal);
+          hermite_points.push_back({{p[0] - d * normal[0], p[1] - d * normal[1], p[2] - d * normal[2]}});
+        }
+        return inserted.first->second;
+      };
+      const MC::Vector_3d low{{origin[0] + double(c[0]) * r, origin[1] + double(c[1]) * r, origin[2] + double(c[2]) * r}};
+      const MC::Vector_3d high{{low[0] + r, low[1] + r, low[2] + r}};
+      const auto plain_triangles = table.triangles(code, join);
+      std::size_t next_triangle = 0;
+      const unsigned polygons = table.number_of_polygons(code, join);
+      for(unsigned q = 0; q < polygons; ++q)
+      {
+        const auto polygon = table.polygon(code, join, q);
+        const std::size_t size = polygon.size();
+        std::array<std::size_t, 12> ids;
+        std::array<MC::Vector_3d, 12> p, hp, n;
+        for(std::size_t i = 0; i < size; ++i)
+        {
+          ids[i] = edge_vertex_of(int(polygon[i]));
+          p[i] = points[ids[i] - first_vertex];
+          hp[i] = hermite_points[ids[i] - first_vertex];
+          n[i] = normals[ids[i] - first_vertex];
+        }
+        const bool centre = Marching_cubes_table::is_centre_vertex(plain_triangles[next_triangle][2]) ||
+                            Marching_cubes_table::is_centre_vertex(plain_triangles[next_triangle][0]) ||
+                            Marching_cubes_table::is_centre_vertex(plain_triangles[next_triangle][1]);
+        const std::size_t count = centre ? size : size - 2;
+        MC::Vector_3d apex;
+        MC::Feature_kind kind = MC::Feature_kind::NONE;
+        if(size >= 3 && MC::has_feature(n.data(), size, settings))
+        {
+          bool folded = false;
+          kind = MC::feature_vertex(hp.data(), n.data(), size, low, high, settings,
+                                    [&](const MC::Vector_3d& x) {
+                                      const bool ok = MC::fan_is_unfolded(p.data(), n.data(), size, x);
+                                      folded = folded || !ok;
+                                      return ok;
+                                    },
+                                    apex);
+          if(kind == MC::Feature_kind::NONE)
+            ++(folded ? plain.folded : plain.no_point);
+        }
+        if(kind != MC::Feature_kind::NONE || centre)
+        {
+          if(kind == MC::Feature_kind::NONE)
+          {
+            apex = {{0, 0, 0}};
+            for(std::size_t i = 0; i < size; ++i)
+              for(int a = 0; a < 3; ++a)
+                apex[a] += p[i][a] / double(size);
+            ++report.centre_vertices;
+          }
+          else
+            ++(kind == MC::Feature_kind::CORNER ? report.feature_corners : report.feature_creases);
+          const std::size_t f = first_vertex + points.size();
+          points.push_back(apex);
+          normals.push_back({{0, 0, 0}});
+          hermite_points.push_back(apex);
+          for(std::size_t i = 0; i < size; ++i)
+          {
+            if(kind != MC::Feature_kind::NONE)
+              fans.push_back(triangles.size());
+            triangles.push_back({{ids[i], ids[(i + 1) % size], f}});
+          }
+        }
+        else
+        {
+          for(std::size_t t = next_triangle; t < next_triangle + count; ++t)
+          {
+            const auto& tr = plain_triangles[t];
+            triangles.push_back({{edge_vertex_of(int(tr[0])), edge_vertex_of(int(tr[1])), edge_vertex_of(int(tr[2]))}});
+          }
+        }
+        next_triangle += count;
+      }
+    }
+    // Flips between neighbouring fans, on indices relative to first_vertex.
+    std::vector<std::array<std::size_t, 3>> local(triangles.size());
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      for(int k = 0; k < 3; ++k)
+        local[t][k] = triangles[t][k] - first_vertex;
+    std::vector<MC::Flipped_edge> flipped;
+    MC::flip_feature_edges(points, normals, local, fans, flipped);
+    report.feature_flips = flipped.size();
+    for(const MC::Vector_3d& p : points)
+      out_points.push_back(Point_3(p[0], p[1], p[2]));
+    for(const auto& t : local)
+    {
+      out_triangles.push_back(typename TriangleRange::value_type{t[0] + first_vertex, t[1] + first_vertex,
+                                                                 t[2] + first_vertex});
+      ++report.number_of_faces;
+    }
+    return out_points.size();
+  }
+
   double field_seconds() const { return m_field_seconds; }
 
 private:
@@ -530,7 +698,21 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
   traversal.walk_from_samples();
   const std::size_t first_vertex = out_points.size();
   const std::size_t first_triangle = out_triangles.size();
-  std::size_t next_vertex = traversal.triangulate(out_points, out_triangles);
+  std::size_t next_vertex = 0;
+  bool features = false;
+  Marching_cubes_csg::Feature_settings settings;
+  if constexpr(Has_tangent_planes<ContouringField_3>::value)
+  {
+    features = choose_parameter(get_parameter(np, internal_np::sharp_features), field.uses_input_normals());
+    const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 30.0);
+    if(!(angle > 0 && angle < 180))
+      throw Invalid_input_error("feature_angle must be in (0, 180) degrees");
+    settings.cos_feature_angle = std::cos(angle * 3.141592653589793 / 180);
+    if(features)
+      next_vertex = traversal.triangulate_with_features(out_points, out_triangles, settings);
+  }
+  if(!features)
+    next_vertex = traversal.triangulate(out_points, out_triangles);
   const double field_seconds = traversal.field_seconds();
   // Bubbles: Hoppe's f is piecewise planar and switches planes at the
   // Voronoi faces of the centres; in concave regions a lattice point can fall
