@@ -128,6 +128,35 @@ with open(f"{work}/peanut.pts", "w") as out:
     for q, m in zip(p, n):
         out.write(f"{q[0]:.9g} {q[1]:.9g} {q[2]:.9g} {m[0]:.9g} {m[1]:.9g} {m[2]:.9g}\n")
 print(f"peanut.pts: {len(p)} samples, max |f| {np.abs(f).max():.1e}")
+
+# Samples of the plate turned off the axes, area-uniform with the exact face
+# normals, and the same points without normals, for the sharp-feature figure.
+lo, hi = np.array([-1.0, -0.6, -0.2]), np.array([1.0, 0.6, 0.2])
+c, s, c2, s2 = math.cos(0.5), math.sin(0.5), math.cos(0.3), math.sin(0.3)
+turn = np.array([[c, -s, 0], [c2 * s, c2 * c, -s2], [s2 * s, s2 * c, c2]])
+faces = []  # (axis, side, u, v, area)
+for axis in range(3):
+    u, v = [a for a in range(3) if a != axis]
+    for side in (0, 1):
+        faces.append((axis, side, u, v, (hi[u] - lo[u]) * (hi[v] - lo[v])))
+areas = np.array([f[4] for f in faces])
+choice = rng.choice(len(faces), size=8000, p=areas / areas.sum())
+points, normals = [], []
+for i in choice:
+    axis, side, u, v, _ = faces[i]
+    q = np.empty(3)
+    q[axis] = hi[axis] if side else lo[axis]
+    q[u] = rng.uniform(lo[u], hi[u])
+    q[v] = rng.uniform(lo[v], hi[v])
+    m = np.zeros(3)
+    m[axis] = 1.0 if side else -1.0
+    points.append(turn @ q)
+    normals.append(turn @ m)
+with open(f"{work}/plate_samples.pts", "w") as out, open(f"{work}/plate_samples_no_normals.pts", "w") as bare:
+    for q, m in zip(points, normals):
+        out.write(f"{q[0]:.9g} {q[1]:.9g} {q[2]:.9g} {m[0]:.9g} {m[1]:.9g} {m[2]:.9g}\n")
+        bare.write(f"{q[0]:.9g} {q[1]:.9g} {q[2]:.9g}\n")
+print(f"plate_samples.pts: {len(points)} samples of a turned 2 x 1.2 x 0.4 plate")
 EOF
 
 # ---- Marching Cubes CSG: CAD-like and organic pairs --------------------------
@@ -161,6 +190,41 @@ render "$work/peanut.off" "$work/peanut_mesh.png" --view 25,-60 --size 4 --zoom 
 side_by_side "$fig/contour_point_set.png" \
   "$work/peanut_points.png" "6,000 oriented samples" \
   "$work/peanut_mesh.png" "contour_point_set() output"
+
+echo "== contour: samples of a plate, without and with their normals"
+"$tools/contour" "$work/plate_samples_no_normals.pts" -o "$work/plate_hoppe.off"
+"$tools/contour" "$work/plate_samples.pts" -o "$work/plate_sharp.off"
+# A close-up of one corner: the faces within 0.3 of it (the corner of the
+# turned plate at (1, -0.6, 0.2)).
+for name in plate_hoppe plate_sharp; do
+  "$py" - "$work/$name.off" "$work/${name}_corner.off" <<'EOF'
+import math, sys
+import numpy as np
+src, dst = sys.argv[1], sys.argv[2]
+c, s, c2, s2 = math.cos(0.5), math.sin(0.5), math.cos(0.3), math.sin(0.3)
+corner = np.array([[c, -s, 0], [c2 * s, c2 * c, -s2], [s2 * s, s2 * c, c2]]) @ np.array([1.0, -0.6, 0.2])
+with open(src) as f:
+    f.readline()
+    rows = (r for r in (line.split() for line in f) if r and not r[0].startswith("#"))
+    nv, nf = map(int, next(rows)[:2])
+    v = np.array([list(map(float, next(rows)[:3])) for _ in range(nv)])
+    faces = [list(map(int, next(rows)[1:4])) for _ in range(nf)]
+keep = [t for t in faces if np.linalg.norm(v[t].mean(axis=0) - corner) < 0.3]
+used = sorted({i for t in keep for i in t})
+index = {i: k for k, i in enumerate(used)}
+with open(dst, "w") as out:
+    out.write(f"OFF\n{len(used)} {len(keep)} 0\n")
+    for i in used:
+        out.write(f"{v[i][0]:.17g} {v[i][1]:.17g} {v[i][2]:.17g}\n")
+    for t in keep:
+        out.write(f"3 {index[t[0]]} {index[t[1]]} {index[t[2]]}\n")
+EOF
+  render "$work/${name}_corner.off" "$work/$name.png" --view 40,-20 --size 4 --zoom 1.2 --edges
+done
+side_by_side "$fig/contour_sharp_features.png" \
+  "$work/plate_hoppe.png" "a corner, without normals" \
+  "$work/plate_sharp.png" "the same, with normals"
+shrink "$fig/contour_sharp_features.png"
 
 # ---- TBISO and its crease network ---------------------------------------------
 echo "== tbiso: at least two of four spheres (the demo)"

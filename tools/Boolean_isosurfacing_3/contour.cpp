@@ -276,7 +276,7 @@ BI::Contouring_statistics contour(Tool& tool, const Options& options, const BI::
 {
   const std::function<bool(double)> progress = tool.progress("contouring");
   const bool consistent = !options.hoppe_only;
-  const bool features = field.uses_input_normals() && !options.no_features;
+  const bool features = field.uses_input_normals() && field.number_of_sharp_samples() > 0 && !options.no_features;
   if(options.max_jump)
     return BI::contour_signed_distance<ConcurrencyTag>(
         lattice, field, points, triangles,
@@ -330,7 +330,10 @@ void print_report(Tool& tool, const Field& field, const BI::Contouring_statistic
       << " closed pieces smaller than rho removed)\n"
       << "signs: " << (report.consistent_signs ? "consistent (winding number)" : "Hoppe's f alone") << ", "
       << report.removed_membranes << " membranes across wide openings removed\n"
-      << "planes: " << (field.uses_input_normals() ? "the input normals' (sharp features kept)" : "Hoppe's PCA planes")
+      << "planes: "
+      << (field.uses_input_normals()
+              ? "the input normals' (" + std::to_string(field.number_of_sharp_samples()) + " samples by a sharp edge)"
+              : std::string("Hoppe's PCA planes"))
       << ", " << report.feature_creases << " crease and " << report.feature_corners << " corner vertices, "
       << report.feature_flips << " edges flipped to join them\n";
   out << "triangles: " << triangles << ", vertices: " << vertices << "\n";

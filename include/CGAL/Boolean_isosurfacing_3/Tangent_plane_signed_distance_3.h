@@ -264,6 +264,12 @@ public:
   /// rather than Hoppe's PCA planes; see the class comment.
   bool uses_input_normals() const { return !m_plane_points.empty(); }
 
+  /// With input normals, the samples with a neighbour whose input normal is
+  /// more than 30 degrees from their own: next to a sharp edge or on a
+  /// curve sharper than the neighbourhood (0 on a smooth, well-sampled
+  /// surface, where the contouring then looks for no sharp feature).
+  std::size_t number_of_sharp_samples() const { return m_sharp_samples; }
+
   /// The plane f uses at `p` (a point on it and its unit outward normal):
   /// the nearest sample's input-normal plane when `uses_input_normals()`,
   /// else Hoppe's nearest tangent plane.  The Hermite data of the sharp
@@ -696,6 +702,8 @@ private:
             sum[c] += CGAL::to_double(m_points[around[a]][c]);
           ++count;
         }
+      if(count < m_k)
+        ++m_sharp_samples;
       m_plane_points[i] = Point_3(sum[0] / double(count), sum[1] / double(count), sum[2] / double(count));
     }
   }
@@ -956,6 +964,7 @@ private:
   // Empty unless f uses the input normals' planes (uses_input_normals()).
   std::vector<Vector_3> m_input_normals; // unit
   std::vector<Point_3> m_plane_points;
+  std::size_t m_sharp_samples = 0;
   std::size_t m_outward_votes = 0, m_inward_votes = 0;
   internal::Fast_winding_number m_winding;
   std::vector<char> m_flat; // see build_winding_number
