@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -350,7 +351,8 @@ TEST(Topology, Merged_range_scans_unoriented_noisy)
 // axes, sampled with its exact face normals.  With the input normals' planes
 // the contour stays closed and 2-manifold, lies nearer the box than with
 // Hoppe's PCA planes (which round every edge), and the crease vertices pull
-// it onto the box's edges, nearer than plain Marching Cubes.  The corners are
+// it onto the box's edges, nearer than plain Marching Cubes, without a
+// self-intersection.  The corners are
 // not recovered: each pokes into a cube whose 8 lattice points are all
 // outside, where Marching Cubes has no polygon (contouring.md).
 TEST(Sharp_features, Box_samples_with_normals_keep_the_edges)
@@ -379,7 +381,7 @@ TEST(Sharp_features, Box_samples_with_normals_keep_the_edges)
   struct Run
   {
     double hausdorff = 0, edge_median = 0; // in cells
-    bool closed = false;
+    bool closed = false, self_intersecting = true;
     BI::Contouring_statistics stats;
   };
   const auto run = [&](const auto& field, bool features) {
@@ -391,6 +393,7 @@ TEST(Sharp_features, Box_samples_with_normals_keep_the_edges)
     const double r = result.stats.cell_size;
     const biso_samples::Measure m = biso_samples::measure(points, triangles, &box);
     result.closed = m.closed && m.non_manifold_vertices == 0 && m.components == 1 && m.euler == 2;
+    result.self_intersecting = PMP::does_self_intersect(m.mesh);
     result.hausdorff = m.hausdorff_percent / 100 * biso_samples::bounding_diagonal(box) / r;
     // The median distance from the box's 12 edges to the output.
     typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
@@ -420,6 +423,7 @@ TEST(Sharp_features, Box_samples_with_normals_keep_the_edges)
   EXPECT_TRUE(sharp.closed);
   EXPECT_TRUE(plain.closed);
   EXPECT_TRUE(hoppe.closed);
+  EXPECT_FALSE(sharp.self_intersecting);
   EXPECT_GT(sharp.stats.feature_creases, 100u);
   EXPECT_GT(sharp.stats.feature_flips, 0u);
   EXPECT_EQ(plain.stats.feature_creases + plain.stats.feature_corners, 0u);

@@ -17,6 +17,8 @@
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Bbox_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 #include <CGAL/Iterator_range.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -283,6 +285,23 @@ public:
 
   }
 
+  // The table code and the decider's join mask of crossed cube c (its
+  // values in `values`), counting its ambiguous and joined faces.
+  void cube_configuration(const std::array<std::int64_t, 3>& c, unsigned& code, unsigned& join)
+  {
+    cube_values(c, values); // cached
+    code = internal::inside_cube_code(values);
+    join = internal::asymptotic_decider_mask(values, code);
+    const unsigned ambiguous = ambiguous_face_mask(code);
+    for(int f = 0; f < 6; ++f)
+      if((ambiguous >> f) & 1u)
+      {
+        ++report.ambiguous_faces;
+        if((join >> f) & 1u)
+          ++report.joined_faces;
+      }
+  }
+
   // The triangles of the crossed cubes, cube by cube in key order, appended;
   // vertices are welded by lattice edge.  Returns the number of points.
   template <typename PointOutRange, typename TriangleRange>
@@ -297,17 +316,8 @@ public:
     for(const std::uint64_t key : surface_cubes)
     {
       const std::array<std::int64_t, 3> c = internal::lattice_index(key);
-      cube_values(c, values); // cached
-      const unsigned code = internal::inside_cube_code(values);
-      const unsigned join = internal::asymptotic_decider_mask(values, code);
-      const unsigned ambiguous = ambiguous_face_mask(code);
-      for(int f = 0; f < 6; ++f)
-        if((ambiguous >> f) & 1u)
-        {
-          ++report.ambiguous_faces;
-          if((join >> f) & 1u)
-            ++report.joined_faces;
-        }
+      unsigned code, join;
+      cube_configuration(c, code, join);
       std::array<std::size_t, 12 + Marching_cubes_table::max_number_of_polygons> local;
       local.fill(std::size_t(-1));
       auto edge_point = [&](int e) -> Point_3 {
@@ -385,17 +395,8 @@ public:
     for(const std::uint64_t key : surface_cubes)
     {
       const std::array<std::int64_t, 3> c = internal::lattice_index(key);
-      cube_values(c, values); // cached
-      const unsigned code = internal::inside_cube_code(values);
-      const unsigned join = internal::asymptotic_decider_mask(values, code);
-      const unsigned ambiguous = ambiguous_face_mask(code);
-      for(int f = 0; f < 6; ++f)
-        if((ambiguous >> f) & 1u)
-        {
-          ++report.ambiguous_faces;
-          if((join >> f) & 1u)
-            ++report.joined_faces;
-        }
+      unsigned code, join;
+      cube_configuration(c, code, join);
       auto edge_point = [&](int e) -> MC::Vector_3d {
         const std::array<int, 2> ends = cube_edge_corners(e);
         const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
@@ -427,72 +428,139 @@ public:
       const MC::Vector_3d low{{origin[0] + double(c[0]) * r, origin[1] + double(c[1]) * r, origin[2] + double(c[2]) * r}};
       const MC::Vector_3d high{{low[0] + r, low[1] + r, low[2] + r}};
       const auto plain_triangles = table.triangles(code, join);
-      std::size_t next_triangle = 0;
       const unsigned polygons = table.number_of_polygons(code, join);
+      // First the decision of every polygon, then, if the cube has several
+      // polygons and a fan, the test that no two polygons intersect (a fan
+      // can pierce another polygon of the same cube, as in the CSG), then
+      // the triangles.
+      struct Polygon_plan
+      {
+        std::array<std::size_t, 12> ids;
+        std::size_t size, first_plain, plain_count;
+        bool centre;
+        MC::Feature_kind kind = MC::Feature_kind::NONE;
+        MC::Vector_3d apex;
+      };
+      std::array<Polygon_plan, Marching_cubes_table::max_number_of_polygons> plans;
+      std::size_t next_triangle = 0, fanned = 0;
       for(unsigned q = 0; q < polygons; ++q)
       {
+        Polygon_plan& plan = plans[q];
         const auto polygon = table.polygon(code, join, q);
-        const std::size_t size = polygon.size();
-        std::array<std::size_t, 12> ids;
+        plan.size = polygon.size();
         std::array<MC::Vector_3d, 12> p, hp, n;
-        for(std::size_t i = 0; i < size; ++i)
+        for(std::size_t i = 0; i < plan.size; ++i)
         {
-          ids[i] = edge_vertex_of(int(polygon[i]));
-          p[i] = points[ids[i] - first_vertex];
-          hp[i] = hermite_points[ids[i] - first_vertex];
-          n[i] = normals[ids[i] - first_vertex];
+          plan.ids[i] = edge_vertex_of(int(polygon[i]));
+          p[i] = points[plan.ids[i] - first_vertex];
+          hp[i] = hermite_points[plan.ids[i] - first_vertex];
+          n[i] = normals[plan.ids[i] - first_vertex];
         }
-        const bool centre = Marching_cubes_table::is_centre_vertex(plain_triangles[next_triangle][2]) ||
-                            Marching_cubes_table::is_centre_vertex(plain_triangles[next_triangle][0]) ||
-                            Marching_cubes_table::is_centre_vertex(plain_triangles[next_triangle][1]);
-        const std::size_t count = centre ? size : size - 2;
-        MC::Vector_3d apex;
-        MC::Feature_kind kind = MC::Feature_kind::NONE;
-        if(size >= 3 && MC::has_feature(n.data(), size, settings))
+        const auto& first = plain_triangles[next_triangle];
+        plan.centre = Marching_cubes_table::is_centre_vertex(first[0]) ||
+                      Marching_cubes_table::is_centre_vertex(first[1]) ||
+                      Marching_cubes_table::is_centre_vertex(first[2]);
+        plan.first_plain = next_triangle;
+        plan.plain_count = plan.centre ? plan.size : plan.size - 2;
+        next_triangle += plan.plain_count;
+        if(plan.size >= 3 && MC::has_feature(n.data(), plan.size, settings))
         {
           bool folded = false;
-          kind = MC::feature_vertex(hp.data(), n.data(), size, low, high, settings,
-                                    [&](const MC::Vector_3d& x) {
-                                      const bool ok = MC::fan_is_unfolded(p.data(), n.data(), size, x);
-                                      folded = folded || !ok;
-                                      return ok;
-                                    },
-                                    apex);
-          if(kind == MC::Feature_kind::NONE)
+          plan.kind = MC::feature_vertex(hp.data(), n.data(), plan.size, low, high, settings,
+                                         [&](const MC::Vector_3d& x) {
+                                           const bool ok = MC::fan_is_unfolded(p.data(), n.data(), plan.size, x);
+                                           folded = folded || !ok;
+                                           return ok;
+                                         },
+                                         plan.apex);
+          if(plan.kind == MC::Feature_kind::NONE)
             ++(folded ? plain.folded : plain.no_point);
-        }
-        if(kind != MC::Feature_kind::NONE || centre)
-        {
-          if(kind == MC::Feature_kind::NONE)
-          {
-            apex = {{0, 0, 0}};
-            for(std::size_t i = 0; i < size; ++i)
-              for(int a = 0; a < 3; ++a)
-                apex[a] += p[i][a] / double(size);
-            ++report.centre_vertices;
-          }
           else
-            ++(kind == MC::Feature_kind::CORNER ? report.feature_corners : report.feature_creases);
+            ++fanned;
+        }
+        if(plan.kind == MC::Feature_kind::NONE && plan.centre)
+        {
+          plan.apex = {{0, 0, 0}};
+          for(std::size_t i = 0; i < plan.size; ++i)
+            for(int a = 0; a < 3; ++a)
+              plan.apex[a] += p[i][a] / double(plan.size);
+        }
+      }
+      if(fanned > 0 && polygons > 1)
+      {
+        typedef Exact_predicates_inexact_constructions_kernel EK;
+        const auto point = [&](const MC::Vector_3d& x) { return EK::Point_3(x[0], x[1], x[2]); };
+        const auto vertex_point = [&](std::size_t v) { return point(points[v - first_vertex]); };
+        std::vector<EK::Triangle_3> pieces;
+        std::vector<unsigned> polygon_of;
+        for(unsigned q = 0; q < polygons; ++q)
+        {
+          const Polygon_plan& plan = plans[q];
+          const auto add = [&](const EK::Triangle_3& t) {
+            if(!t.is_degenerate())
+            {
+              pieces.push_back(t);
+              polygon_of.push_back(q);
+            }
+          };
+          if(plan.kind != MC::Feature_kind::NONE || plan.centre)
+            for(std::size_t i = 0; i < plan.size; ++i)
+              add(EK::Triangle_3(vertex_point(plan.ids[i]), vertex_point(plan.ids[(i + 1) % plan.size]),
+                                 point(plan.apex)));
+          else
+            for(std::size_t t = plan.first_plain; t < plan.first_plain + plan.plain_count; ++t)
+              add(EK::Triangle_3(vertex_point(edge_vertex_of(int(plain_triangles[t][0]))),
+                                 vertex_point(edge_vertex_of(int(plain_triangles[t][1]))),
+                                 vertex_point(edge_vertex_of(int(plain_triangles[t][2])))));
+        }
+        bool pierced = false;
+        for(std::size_t i = 0; i < pieces.size() && !pierced; ++i)
+          for(std::size_t j = i + 1; j < pieces.size() && !pierced; ++j)
+            pierced = polygon_of[i] != polygon_of[j] && CGAL::do_intersect(pieces[i], pieces[j]);
+        if(pierced)
+        {
+          plain.folded += fanned;
+          for(unsigned q = 0; q < polygons; ++q)
+            if(plans[q].kind != MC::Feature_kind::NONE)
+            {
+              plans[q].kind = MC::Feature_kind::NONE;
+              // A polygon whose table entry fans around a centre vertex keeps that fan.
+              if(plans[q].centre)
+              {
+                plans[q].apex = {{0, 0, 0}};
+                for(std::size_t i = 0; i < plans[q].size; ++i)
+                  for(int a = 0; a < 3; ++a)
+                    plans[q].apex[a] += points[plans[q].ids[i] - first_vertex][a] / double(plans[q].size);
+              }
+            }
+        }
+      }
+      for(unsigned q = 0; q < polygons; ++q)
+      {
+        const Polygon_plan& plan = plans[q];
+        if(plan.kind != MC::Feature_kind::NONE || plan.centre)
+        {
+          if(plan.kind == MC::Feature_kind::NONE)
+            ++report.centre_vertices;
+          else
+            ++(plan.kind == MC::Feature_kind::CORNER ? report.feature_corners : report.feature_creases);
           const std::size_t f = first_vertex + points.size();
-          points.push_back(apex);
+          points.push_back(plan.apex);
           normals.push_back({{0, 0, 0}});
-          hermite_points.push_back(apex);
-          for(std::size_t i = 0; i < size; ++i)
+          hermite_points.push_back(plan.apex);
+          for(std::size_t i = 0; i < plan.size; ++i)
           {
-            if(kind != MC::Feature_kind::NONE)
+            if(plan.kind != MC::Feature_kind::NONE)
               fans.push_back(triangles.size());
-            triangles.push_back({{ids[i], ids[(i + 1) % size], f}});
+            triangles.push_back({{plan.ids[i], plan.ids[(i + 1) % plan.size], f}});
           }
         }
         else
-        {
-          for(std::size_t t = next_triangle; t < next_triangle + count; ++t)
+          for(std::size_t t = plan.first_plain; t < plan.first_plain + plan.plain_count; ++t)
           {
             const auto& tr = plain_triangles[t];
             triangles.push_back({{edge_vertex_of(int(tr[0])), edge_vertex_of(int(tr[1])), edge_vertex_of(int(tr[2]))}});
           }
-        }
-        next_triangle += count;
       }
     }
     // Flips between neighbouring fans, on indices relative to first_vertex.
