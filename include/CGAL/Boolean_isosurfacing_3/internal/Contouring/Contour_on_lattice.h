@@ -442,6 +442,14 @@ public:
         MC::Vector_3d apex;
       };
       std::array<Polygon_plan, Marching_cubes_table::max_number_of_polygons> plans;
+      // The table's centre vertex of a polygon: the centroid of its edge points.
+      const auto centroid = [&](const Polygon_plan& plan) {
+        MC::Vector_3d x{{0, 0, 0}};
+        for(std::size_t i = 0; i < plan.size; ++i)
+          for(int a = 0; a < 3; ++a)
+            x[a] += points[plan.ids[i] - first_vertex][a] / double(plan.size);
+        return x;
+      };
       std::size_t next_triangle = 0, fanned = 0;
       for(unsigned q = 0; q < polygons; ++q)
       {
@@ -479,12 +487,7 @@ public:
             ++fanned;
         }
         if(plan.kind == MC::Feature_kind::NONE && plan.centre)
-        {
-          plan.apex = {{0, 0, 0}};
-          for(std::size_t i = 0; i < plan.size; ++i)
-            for(int a = 0; a < 3; ++a)
-              plan.apex[a] += p[i][a] / double(plan.size);
-        }
+          plan.apex = centroid(plan);
       }
       if(fanned > 0 && polygons > 1)
       {
@@ -526,12 +529,7 @@ public:
               plans[q].kind = MC::Feature_kind::NONE;
               // A polygon whose table entry fans around a centre vertex keeps that fan.
               if(plans[q].centre)
-              {
-                plans[q].apex = {{0, 0, 0}};
-                for(std::size_t i = 0; i < plans[q].size; ++i)
-                  for(int a = 0; a < 3; ++a)
-                    plans[q].apex[a] += points[plans[q].ids[i] - first_vertex][a] / double(plans[q].size);
-              }
+                plans[q].apex = centroid(plans[q]);
             }
         }
       }
@@ -769,7 +767,7 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
   const std::size_t first_triangle = out_triangles.size();
   std::size_t next_vertex = 0;
   bool features = false;
-  Marching_cubes_csg::Feature_settings settings;
+  const Marching_cubes_csg::Feature_settings settings = feature_settings(np);
   if constexpr(Has_tangent_planes<ContouringField_3>::value)
   {
     // By default, only where a sharp feature can be: input normals, and a
@@ -777,10 +775,6 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
     // the Hermite data cost 15 % of its contouring for nothing).
     features = choose_parameter(get_parameter(np, internal_np::sharp_features),
                                 field.uses_input_normals() && field.number_of_sharp_samples() > 0);
-    const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 30.0);
-    if(!(angle > 0 && angle < 180))
-      throw Invalid_input_error("feature_angle must be in (0, 180) degrees");
-    settings.cos_feature_angle = std::cos(angle * 3.141592653589793 / 180);
     if(features)
       next_vertex = traversal.triangulate_with_features(out_points, out_triangles, settings);
   }

@@ -899,22 +899,6 @@ inline void add_csg_warnings(Marching_cubes_csg_statistics& statistics)
                                   std::to_string(statistics.sparse_result_suggested_spacing) + " would see most");
 }
 
-// The named parameters `sharp_features` (default true) and `feature_angle`
-// (degrees, default 30).
-template <typename NamedParameters>
-Marching_cubes_csg::Feature_settings feature_settings(const NamedParameters& np)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  Marching_cubes_csg::Feature_settings settings;
-  settings.enabled = choose_parameter(get_parameter(np, internal_np::sharp_features), true);
-  const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 30.0);
-  if(!(angle > 0 && angle < 180))
-    throw Invalid_input_error("the feature angle must be in (0, 180) degrees, got " + std::to_string(angle));
-  settings.cos_feature_angle = std::cos(angle * 3.14159265358979323846 / 180.0);
-  return settings;
-}
-
 // Into `points` and `triangles` (arrays of three indices of any integer type
 // that holds the vertex count), both cleared first.
 template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters, typename Triangle>

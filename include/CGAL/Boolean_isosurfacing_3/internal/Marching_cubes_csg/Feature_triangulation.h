@@ -19,6 +19,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/assertions.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
@@ -31,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -294,6 +296,23 @@ std::vector<Feature_kind> merge_feature_chunks(std::vector<Feature_chunk>& chunk
 }
 
 } // namespace Marching_cubes_csg
+
+// The named parameters `sharp_features` (default true) and `feature_angle`
+// (degrees, default 30), read by the CSG and by the contouring.
+template <typename NamedParameters>
+Marching_cubes_csg::Feature_settings feature_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Marching_cubes_csg::Feature_settings settings;
+  settings.enabled = choose_parameter(get_parameter(np, internal_np::sharp_features), true);
+  const double angle = choose_parameter(get_parameter(np, internal_np::feature_angle), 30.0);
+  if(!(angle > 0 && angle < 180))
+    throw Invalid_input_error("the feature angle must be in (0, 180) degrees, got " + std::to_string(angle));
+  settings.cos_feature_angle = std::cos(angle * 3.14159265358979323846 / 180.0);
+  return settings;
+}
+
 } // namespace internal
 } // namespace Boolean_isosurfacing
 } // namespace CGAL
