@@ -239,7 +239,13 @@ public:
       concurrent_for<ConcurrencyTag>(
           chunks,
           [&](std::size_t c) {
-            triangulate_feature_layers(layers * c / chunks, layers * (c + 1) / chunks, points, buffers[c]);
+            // A closed surface has about two triangles a vertex (each
+            // feature vertex adds two): reserved, the buffer is not copied
+            // as it grows.
+            const std::size_t first = layers * c / chunks, last = layers * (c + 1) / chunks;
+            const std::size_t vertices = m_vertex_offset[last] - m_vertex_offset[first];
+            buffers[c].triangles.reserve(2 * vertices + vertices / 16 + 64);
+            triangulate_feature_layers(first, last, points, buffers[c]);
           },
           progress);
       release_planes();

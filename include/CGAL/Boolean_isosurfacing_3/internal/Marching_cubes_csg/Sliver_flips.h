@@ -33,6 +33,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -54,6 +55,25 @@ inline double largest_cosine(const Vector_3d& a, const Vector_3d& b, const Vecto
     best = (std::max)(best, dot3(u, v) / std::sqrt(l));
   }
   return best;
+}
+
+/// Whether the smallest angle of the triangle abc is below the angle whose
+/// cosine is `cos_angle` (in (0, 1)), or abc is degenerate: the cosine of
+/// the angle opposite the shortest side, by the law of cosines on squared
+/// lengths (no square root: this tests every triangle of the output).
+inline bool has_angle_below(const Vector_3d& a, const Vector_3d& b, const Vector_3d& c, double cos_angle)
+{
+  const Vector_3d ab = sub3(b, a), bc = sub3(c, b), ca = sub3(a, c);
+  double s = dot3(ab, ab), p = dot3(bc, bc), q = dot3(ca, ca);
+  if(p < s)
+    std::swap(p, s);
+  if(q < s)
+    std::swap(q, s);
+  if(!(s > 0))
+    return true;
+  // cos = (p + q - s) / (2 sqrt(p q)), and p + q - s >= p > 0.
+  const double n = p + q - s;
+  return n * n > 4 * cos_angle * cos_angle * p * q;
 }
 
 /// Parameters of `flip_slivers()`.
@@ -79,13 +99,12 @@ bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>&
 {
   const std::size_t corners = 3 * triangles.size();
   const Index none = Index(-1);
-  const auto vertex = [&](std::size_t c) { return std::size_t(triangles[c / 3][c % 3]); };
   const auto next = [](std::size_t c) { return c - c % 3 + (c + 1) % 3; };
   const auto previous = [](std::size_t c) { return c - c % 3 + (c + 2) % 3; };
   opposite.assign(corners, none);
   // The corners of each vertex (compressed rows), built for one range of
   // 2^shift vertices at a time: the rows of all vertices at once would be
-  // another 4 bytes a corner at the memory peak of the feature path.  The
+  // another 12 bytes a corner at the memory peak of the feature path.  The
   // ranges only change the order of the work, not the table.  Each range
   // reads only the triangles from the first to the last that has a vertex
   // in it: the vertices of Marching Cubes are numbered plane by plane and
@@ -117,47 +136,52 @@ bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>&
           ++first[v - low + 1];
     for(std::size_t v = 0; v < high - low; ++v)
       first[v + 1] += first[v];
-    std::vector<Index> star(first.back());
-    std::vector<Index> fill(first.begin(), first.end() - 1);
-    for(std::size_t c = 3 * window_begin[r]; c < 3 * window_end[r]; ++c)
+    // Each entry of v's star is a corner of v with the vertices after and
+    // before v in its triangle, written while the triangles are read in
+    // order: the matching below then reads no triangle.
+    struct Star_corner
     {
-      const std::size_t v = vertex(c);
-      if(v >= low && v < high)
-        star[fill[v - low]++] = Index(c);
+      Index corner, after, before;
+    };
+    std::vector<Star_corner> star(first.back());
+    std::vector<Index> fill(first.begin(), first.end() - 1);
+    for(std::size_t t = window_begin[r]; t < window_end[r]; ++t)
+    {
+      const std::array<std::size_t, 3> tv{{std::size_t(triangles[t][0]), std::size_t(triangles[t][1]),
+                                           std::size_t(triangles[t][2])}};
+      for(int i = 0; i < 3; ++i)
+        if(tv[i] >= low && tv[i] < high)
+          star[fill[tv[i] - low]++] = {Index(3 * t + i), Index(tv[(i + 1) % 3]), Index(tv[(i + 2) % 3])};
     }
     // Both halves of an edge v -> w and w -> v pass through v, so the twin
     // of each edge leaving v is found in v's own star: each triangle is
-    // read once per corner, not once per corner and neighbour.  `link`
-    // holds, for each corner of v, the vertices after and before v.
-    std::vector<std::array<std::size_t, 2>> link;
+    // read once per corner, not once per corner and neighbour.
     for(std::size_t v = 0; v < high - low; ++v)
     {
-      link.clear();
-      for(Index x = first[v]; x < first[v + 1]; ++x)
-        link.push_back({{vertex(next(star[x])), vertex(previous(star[x]))}});
-      for(std::size_t k = 0; k < link.size(); ++k)
+      const Star_corner* const begin = star.data() + first[v];
+      const Star_corner* const end = star.data() + first[v + 1];
+      for(const Star_corner* k = begin; k != end; ++k)
       {
         // The edge v -> w of corner c's triangle faces previous(c); its twin
         // w -> v must be in exactly one other triangle, where w comes before
         // v and the twin faces the corner after v.  (A second v -> w makes
         // the search from w find two.)
-        const std::size_t w = link[k][0];
-        std::size_t twin = link.size();
-        for(std::size_t j = 0; j < link.size(); ++j)
-          if(link[j][1] == w)
+        const Index w = k->after;
+        const Star_corner* twin = nullptr;
+        bool unique = true;
+        for(const Star_corner* j = begin; j != end; ++j)
+          if(j->before == w)
           {
-            if(twin != link.size())
-              twin = link.size() + 1;
-            else
-              twin = j;
+            unique = twin == nullptr;
+            twin = j;
           }
-        if(twin >= link.size())
+        if(twin == nullptr || !unique)
         {
           manifold = false;
           return;
         }
         // Written by this range only: corner previous(c) belongs to v.
-        opposite[previous(star[first[v] + k])] = Index(next(star[first[v] + twin]));
+        opposite[previous(std::size_t(k->corner))] = Index(next(std::size_t(twin->corner)));
       }
     }
   });
@@ -296,7 +320,7 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
   for(std::size_t t = 0; t < triangles.size() && flips < max_flips; ++t)
   {
     const auto& tr = triangles[t];
-    if(largest_cosine(points[tr[0]], points[tr[1]], points[tr[2]]) > cos_seed)
+    if(has_angle_below(points[tr[0]], points[tr[1]], points[tr[2]], cos_seed))
       for(std::size_t i = 0; i < 3 && flips < max_flips; ++i)
         try_flip(3 * t + i);
   }
