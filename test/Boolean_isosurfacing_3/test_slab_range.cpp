@@ -433,7 +433,7 @@ TEST(SlabRange, CsgRangesWeldToTheSequentialSurface)
                 : std::vector<std::size_t>();
         ASSERT_EQ(top.size(), g.top_edges.size());
         all_points.insert(all_points.end(), g.points.begin(), g.points.end());
-        for(const std::array<std::size_t, 3>& t : g.triangles)
+        for(const auto& t : g.triangles)
         {
           std::array<std::size_t, 3> u;
           for(int v = 0; v < 3; ++v)

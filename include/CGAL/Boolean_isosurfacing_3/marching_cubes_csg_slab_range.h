@@ -61,7 +61,9 @@ struct Marching_cubes_csg_slab_range
   std::vector<std::array<double, 3>> points;
   /// Index `t < points.size()`: an owned vertex; `t >= points.size()`: the
   /// vertex on lattice edge `top_edges[t - points.size()]` of plane `last_layer`.
-  std::vector<std::array<std::size_t, 3>> triangles;
+  /// 32-bit: a range's own numbering, and 12 bytes a triangle instead of 24
+  /// (a range of more than 2^32 vertices throws `Lattice_too_large_error`).
+  std::vector<std::array<std::uint32_t, 3>> triangles;
   /// Edge ids `3 * (i + nx * j) + axis`, increasing, of the vertices of plane
   /// `first_layer` (x, y and z edges): the first `bottom_edges.size()` points.
   std::vector<std::uint64_t> bottom_edges;
@@ -127,8 +129,9 @@ inline std::vector<std::size_t> top_vertex_indices(const Marching_cubes_csg_slab
  * \cgalNamedParamsEnd
  *
  * \pre `first_layer <= last_layer <= lattice.number_of_points(2) - 1`
- * \throws the exceptions of `marching_cubes_csg()`, and Invalid_input_error
- * for `sharp_features(true)`.
+ * \throws the exceptions of `marching_cubes_csg()`, Invalid_input_error
+ * for `sharp_features(true)`, and Lattice_too_large_error when the range has
+ * more than 2^32 vertices (its triangles number them with 32 bits).
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMeshRange,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>

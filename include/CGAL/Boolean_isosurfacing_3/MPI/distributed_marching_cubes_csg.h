@@ -122,9 +122,8 @@ public:
 
   // The records of triangles [first, last) appended to `out`, with the
   // vertex indices `global(i)`.
-  template <typename Global>
-  void faces(std::string& out, const std::array<std::size_t, 3>* first, const std::array<std::size_t, 3>* last,
-             const Global& global) const
+  template <typename Triangle, typename Global>
+  void faces(std::string& out, const Triangle* first, const Triangle* last, const Global& global) const
   {
     if(m_format == PLY)
     {
@@ -244,7 +243,7 @@ marching_cubes_csg_distributed(MPI_Comm comm, const Regular_lattice_3& lattice, 
   const std::array<double, 3> c{{(box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
                                  (box.zmin() + box.zmax()) / 2}};
   internal::Accurate_sum<double> volume;
-  for(const std::array<std::size_t, 3>& t : range.triangles)
+  for(const auto& t : range.triangles)
   {
     std::array<std::array<double, 3>, 3> p;
     for(int v = 0; v < 3; ++v)
