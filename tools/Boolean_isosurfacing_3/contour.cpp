@@ -19,23 +19,26 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/pts.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_point_samples.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/tris.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
 #include <CGAL/Boolean_isosurfacing_3/contour_point_set.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -358,11 +361,33 @@ void write_mesh(Tool& tool, const std::string& out, const std::vector<Point_3>& 
                 const std::vector<std::array<std::size_t, 3>>& triangles)
 {
   const biso_tools::Stopwatch watch;
-  const bool ok = biso_tools::extension(out) == "tris"
-                      ? BI::IO::write_tris(out, points, triangles)
-                      : CGAL::IO::write_polygon_soup(out, points, triangles, CGAL::parameters::stream_precision(17));
-  if(!ok)
-    throw biso_tools::File_error(out + ": cannot write");
+  if(biso_tools::extension(out) == "tris")
+  {
+    if(!BI::IO::write_tris(out, points, triangles))
+      throw biso_tools::File_error(out + ": cannot write");
+  }
+  else
+  {
+    // The package's writer (as csg's): straight from flat arrays, shortest
+    // round-trip decimals; CGAL's stream writer took a fifth of the process.
+    BI::Triangle_soup_3 soup;
+    soup.points.reserve(points.size());
+    for(const Point_3& p : points)
+      soup.points.push_back({{p.x(), p.y(), p.z()}});
+    if(points.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+      throw biso_tools::File_error(out + ": more than 2^32 vertices, too many for the mesh formats' 32-bit indices");
+    soup.triangles.reserve(triangles.size());
+    for(const std::array<std::size_t, 3>& t : triangles)
+      soup.triangles.push_back({{std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])}});
+    try
+    {
+      BI::IO::write_triangle_soup(out, soup);
+    }
+    catch(const std::runtime_error& e)
+    {
+      throw biso_tools::File_error(out + ": cannot write (" + e.what() + ")");
+    }
+  }
   tool.output(out);
   tool.stage("write", "wrote " + out, watch.seconds());
   tool.human_stream() << "wrote " << out << "\n";
