@@ -19,6 +19,8 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Random.h>
@@ -29,6 +31,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <chrono>
@@ -363,18 +366,68 @@ TEST(Seed_conventions, Zero_counts_as_outside)
   v[0] = -1; // only corner 0 is inside; the others (f = 0) are outside
   const Cube_run run = contour_unit_cube(v);
   ASSERT_EQ(run.triangles.size(), 1u);
-  for(const Point_3& p : run.points) // t = 1: the vertices sit on the zero corners
-    EXPECT_DOUBLE_EQ(CGAL::to_double(p.x() + p.y() + p.z()), 1.0);
+  // The seed's t = 1 would put the vertices on the zero corners; they stay a
+  // thousandth of the edge before them (vertex_edge_parameter).
+  for(const Point_3& p : run.points)
+    EXPECT_DOUBLE_EQ(CGAL::to_double(p.x() + p.y() + p.z()), 1.0 - BI::internal::min_vertex_edge_parameter);
+}
+
+// f vanishing at lattice points (a plane through a lattice plane, as the faces
+// of cube.pwn on its bounding box): the seed put the vertices of every edge
+// from such a point on the point itself, several distinct vertices at one
+// position and zero-area triangles.  Each vertex stays on its own edge.
+TEST(Seed_conventions, Zeros_at_lattice_points_give_no_coincident_vertices)
+{
+  // The plane z = 1 is a lattice plane (the seeds' bounding box starts there;
+  // x and y lattice coordinates are k + 1/2), f = z - 1 vanishes at its
+  // points, and two of them, beside p0 = (2.5, 2.5, 1), are dented inside:
+  // p0 (f = 0, outside) then ends three crossed edges, along x, y and z.
+  Analytic_field field;
+  for(int i = 0; i < 4; ++i)
+    for(int j = 0; j < 4; ++j)
+      field.seeds.push_back(Point_3(i + 0.5, j + 0.5, 1.0));
+  const auto near = [](const Point_3& p, double x, double y, double z) {
+    return std::abs(p.x() - x) < 0.25 && std::abs(p.y() - y) < 0.25 && std::abs(p.z() - z) < 0.25;
+  };
+  field.f = [near](const Point_3& p) -> std::optional<double> {
+    if(near(p, 1.5, 2.5, 1.0) || near(p, 2.5, 1.5, 1.0))
+      return -1.0;
+    return p.z() - 1.0;
+  };
+  std::vector<Point_3> points;
+  std::vector<Triangle> triangles;
+  BI::contour_signed_distance(BI::contouring_lattice(field, BI::parameters::cell_size(1.0)), field, points, triangles,
+                              BI::parameters::cell_size(1.0));
+  ASSERT_FALSE(triangles.empty());
+  std::vector<std::array<double, 3>> positions;
+  std::size_t around_p0 = 0;
+  for(const Point_3& p : points)
+  {
+    positions.push_back({{p.x(), p.y(), p.z()}});
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point_3(2.5, 2.5, 1.0))));
+    if(d < 0.5)
+    {
+      ++around_p0; // the seed's t = 1 put these three on p0 itself
+      EXPECT_NEAR(d, BI::internal::min_vertex_edge_parameter, 1e-12);
+    }
+  }
+  EXPECT_EQ(around_p0, 3u);
+  std::sort(positions.begin(), positions.end());
+  EXPECT_TRUE(std::adjacent_find(positions.begin(), positions.end()) == positions.end()) << "coincident vertices";
+  for(const Triangle& t : triangles)
+    EXPECT_FALSE(CGAL::collinear(points[t[0]], points[t[1]], points[t[2]])) << "zero-area triangle";
 }
 
 TEST(Seed_conventions, Plane_field_is_reproduced_exactly)
 {
   // f(p) = (p - o) . n with n = (0, 0, 1): a horizontal plane z = 0.3 crossing
-  // a 4 x 4 x 4 lattice; the seed's linear interpolation is exact for it.
+  // a 4 x 4 x 4 lattice; the seed's linear interpolation is exact for it.  The
+  // seeds span z in [0, 0.3] so that the lattice (from their bounding box)
+  // has a plane at z = 0, not at z = 0.3 (there, see below).
   Analytic_field field;
   for(int i = 0; i < 4; ++i)
     for(int j = 0; j < 4; ++j)
-      field.seeds.push_back(Point_3(i + 0.5, j + 0.5, 0.3));
+      field.seeds.push_back(Point_3(i + 0.5, j + 0.5, (i + j) % 2 == 0 ? 0.3 : 0.0));
   field.f = [](const Point_3& p) -> std::optional<double> { return p.z() - 0.3; };
   std::vector<Point_3> points;
   std::vector<Triangle> triangles;
@@ -845,6 +898,15 @@ TEST(Orientation, Cube_pwn_normals_are_rejected)
   EXPECT_EQ(t.components, 1u);
   EXPECT_EQ(t.euler, 2);
   EXPECT_GT(CGAL::to_double(BI::surveyor_volume(r.mesh)), 0); // outward
+  // The block's faces lie in lattice planes (the lattice starts on the
+  // samples' bounding box): f vanishes there to rounding, and the vertices
+  // of every edge from such a lattice point used to land on the point itself
+  // (2,649 pairs of touching triangles).  They are now kept r / 1000 away.
+  std::size_t degenerate = 0;
+  for(const Mesh::Face_index f : faces(r.mesh))
+    degenerate += PMP::is_degenerate_triangle_face(f, r.mesh) ? 1 : 0;
+  EXPECT_EQ(degenerate, 0u);
+  EXPECT_FALSE(PMP::does_self_intersect(r.mesh));
   std::cout << "[ measured ] cube.pwn with its normals rejected: " << r.mesh.number_of_faces() << " triangles, chi "
             << t.euler << ", border cycles " << t.border_cycles << std::endl;
 }

@@ -325,7 +325,7 @@ public:
         const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
         const Point_3 vi = lattice_point(c[0] + o0[0], c[1] + o0[1], c[2] + o0[2]);
         const Point_3 vj = lattice_point(c[0] + o1[0], c[1] + o1[1], c[2] + o1[2]);
-        const double t = internal::edge_parameter(values[ends[0]], values[ends[1]]);
+        const double t = internal::vertex_edge_parameter(values[ends[0]], values[ends[1]]);
         return vi + t * (vj - vi);
       };
       auto vertex = [&](unsigned v) -> std::size_t {
@@ -400,7 +400,7 @@ public:
       auto edge_point = [&](int e) -> MC::Vector_3d {
         const std::array<int, 2> ends = cube_edge_corners(e);
         const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
-        const double t = internal::edge_parameter(values[ends[0]], values[ends[1]]);
+        const double t = internal::vertex_edge_parameter(values[ends[0]], values[ends[1]]);
         MC::Vector_3d p;
         for(int a = 0; a < 3; ++a)
           p[a] = origin[a] + double(c[a] + o0[a]) * r + t * (double(o1[a] - o0[a]) * r);

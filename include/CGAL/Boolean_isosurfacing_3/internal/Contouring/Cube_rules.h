@@ -9,6 +9,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -58,6 +59,25 @@ inline unsigned inside_cube_code(const std::array<double, 8>& values)
 /// The seed's interpolation parameter on edge (v_i, v_j):  t = -f_i / (f_j - f_i).
 /// \pre f_i and f_j lie on different sides (one < 0, the other >= 0).
 inline double edge_parameter(double f_i, double f_j) { return -f_i / (f_j - f_i); }
+
+/// The smallest distance, in edge lengths, from an output vertex to a lattice
+/// point: `vertex_edge_parameter()` keeps t in [min_vertex_edge_parameter,
+/// 1 - min_vertex_edge_parameter].
+constexpr double min_vertex_edge_parameter = 1e-3;
+
+/// Where the vertex on edge (v_i, v_j) goes: `edge_parameter()`, kept a
+/// thousandth of the edge away from its ends.  Where f vanishes at a lattice
+/// point (to rounding: samples of a flat face in a lattice plane, as CGAL's
+/// cube.pwn on its bounding box), every edge from that point to the other
+/// side put its vertex on the point itself: distinct vertices at one
+/// position, zero-area triangles, and triangles that touch away from their
+/// shared vertices (2,649 such pairs on cube.pwn).  The vertices stay on
+/// their own edges, at most r / 1000 from where the seed puts them.
+inline double vertex_edge_parameter(double f_i, double f_j)
+{
+  const double t = edge_parameter(f_i, f_j);
+  return (std::min)((std::max)(t, min_vertex_edge_parameter), 1 - min_vertex_edge_parameter);
+}
 
 /// Asymptotic decider: whether the inside corners of ambiguous face `face`
 /// are connected, from the face's 4 values only (the same double operations in
