@@ -105,9 +105,14 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
   const std::vector<unsigned char>& tried = marks.near_collapse;
   std::vector<Edge> candidates;
   for(const auto& t : triangles)
+  {
+    // After the first pass most triangles have no flagged vertex: one test
+    // for the three edges.
+    if(!tried.empty() && !(tried[t[0]] || tried[t[1]] || tried[t[2]]))
+      continue;
     for(int i = 0; i < 3; ++i)
     {
-      const std::size_t a = t[i], b = t[(i + 1) % 3];
+      const std::size_t a = t[i], b = t[i == 2 ? 0 : i + 1];
       if(a < b && b < first_feature_vertex && (tried.empty() || tried[a] || tried[b]))
       {
         const Vector_3d d = sub3(points[a], points[b]);
@@ -115,6 +120,7 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
           candidates.push_back({{a, b}});
       }
     }
+  }
   marks.near_collapse.clear();
   if(candidates.empty())
     return 0;
