@@ -240,11 +240,12 @@ public:
           chunks,
           [&](std::size_t c) {
             // A closed surface has about two triangles a vertex (each
-            // feature vertex adds two): reserved, the buffer is not copied
-            // as it grows.
+            // feature vertex adds two, a handle four): reserved with room
+            // to spare (untouched capacity costs no memory), the buffer is
+            // not copied as it grows.
             const std::size_t first = layers * c / chunks, last = layers * (c + 1) / chunks;
             const std::size_t vertices = m_vertex_offset[last] - m_vertex_offset[first];
-            buffers[c].triangles.reserve(2 * vertices + vertices / 16 + 64);
+            buffers[c].triangles.reserve(2 * vertices + vertices / 4 + 64);
             triangulate_feature_layers(first, last, points, buffers[c]);
           },
           progress);

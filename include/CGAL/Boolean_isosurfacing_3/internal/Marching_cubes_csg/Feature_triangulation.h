@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -269,22 +270,38 @@ std::vector<Feature_kind> merge_feature_chunks(std::vector<Feature_chunk>& chunk
   const std::size_t vertices = points.size() + features;
   if(vertices != 0 && vertices - 1 > std::size_t((std::numeric_limits<typename Triangle::value_type>::max)()))
     throw Lattice_too_large_error("the output has more vertices than its index type can number");
-  triangles.reserve(triangles.size() + total);
+  // The first chunk's buffer becomes the output when their types agree (all
+  // of it with one chunk): no second copy of the triangles to allocate and
+  // fill, the memory peak of the path.
+  bool first_in_place = false;
+  if constexpr(std::is_same<Triangle, Feature_chunk::Triangle>::value)
+    if(triangles.empty() && !chunks.empty())
+    {
+      triangles.swap(chunks.front().triangles);
+      first_in_place = true;
+    }
+  triangles.reserve(first_in_place ? total : triangles.size() + total);
   points.reserve(points.size() + features);
   std::vector<Feature_kind> kinds;
   kinds.reserve(features);
   std::vector<std::size_t> fans;
   for(Feature_chunk& c : chunks)
   {
-    const std::size_t vertex_offset = points.size(), triangle_offset = triangles.size();
-    for(const Feature_chunk::Triangle& chunk_triangle : c.triangles)
+    const std::size_t vertex_offset = points.size();
+    const auto with_features = [&](std::size_t v) {
+      return (v & feature_vertex_flag) ? vertex_offset + (v & ~feature_vertex_flag) : v;
+    };
+    std::size_t triangle_offset = triangles.size();
+    if(first_in_place)
     {
-      std::array<std::size_t, 3> t{{chunk_triangle[0], chunk_triangle[1], chunk_triangle[2]}};
-      for(std::size_t& v : t)
-        if(v & feature_vertex_flag)
-          v = vertex_offset + (v & ~feature_vertex_flag);
-      triangles.push_back(make_triangle<Triangle>(t[0], t[1], t[2]));
+      triangle_offset = 0;
+      for(Triangle& t : triangles)
+        t = make_triangle<Triangle>(with_features(t[0]), with_features(t[1]), with_features(t[2]));
+      first_in_place = false;
     }
+    else
+      for(const Feature_chunk::Triangle& t : c.triangles)
+        triangles.push_back(make_triangle<Triangle>(with_features(t[0]), with_features(t[1]), with_features(t[2])));
     points.insert(points.end(), c.feature_points.begin(), c.feature_points.end());
     kinds.insert(kinds.end(), c.feature_kinds.begin(), c.feature_kinds.end());
     for(std::size_t f : c.fans)
