@@ -709,6 +709,34 @@ TEST(CsgFeaturesTable, ShortEdgeOfATetrahedronIsNotCollapsed)
   EXPECT_EQ(octahedron.size(), 5u);
 }
 
+// A short edge whose higher-numbered end cannot move onto the lower one (a
+// triangle of its star would turn over: the star is not visible from there)
+// collapses the other way.  A flat patch closed by an apex below: b (1) has
+// a link edge u-w whose line passes between b and a (0); a's star is seen
+// whole from b.
+TEST(CsgFeaturesTable, ShortEdgeCollapsesTowardTheEndThatKeepsTheOrientation)
+{
+  const std::size_t a = 0, b = 1, u = 2, w = 3, v = 4, x = 5, y1 = 6, y2 = 7, apex = 8;
+  const std::vector<MC::Vector_3d> points{{{0.2, 0, 0}}, {{0, 0, 0}},  {{0.1, 1, 0}},  {{0.1, 3, 0}},   {{-1, 0, 0}},
+                                          {{0, -1, 0}},  {{1, -1, 0}}, {{1, 1, 0}},    {{0.1, 0.5, -2}}};
+  std::vector<Tri> triangles{{{b, a, u}},     {{b, u, w}},     {{b, w, v}},     {{b, v, x}},     {{b, x, a}},
+                             {{a, x, y1}},    {{a, y1, y2}},   {{a, y2, u}},    {{y1, x, apex}}, {{y2, y1, apex}},
+                             {{u, y2, apex}}, {{w, u, apex}},  {{v, w, apex}},  {{x, v, apex}}};
+  MC::Collapse_marks marks;
+  marks.removed.assign(points.size(), 0);
+  ASSERT_EQ(MC::collapse_short_edges_once(points, triangles, points.size(), 0.3, marks), 1u);
+  EXPECT_EQ(marks.removed[a], 1); // the lower-numbered end went
+  EXPECT_EQ(marks.removed[b], 0);
+  ASSERT_EQ(triangles.size(), 12u);
+  for(const Tri& t : triangles)
+  {
+    EXPECT_TRUE(t[0] != a && t[1] != a && t[2] != a);
+    const bool top = t[0] != apex && t[1] != apex && t[2] != apex;
+    if(top) // the flat patch still faces up
+      EXPECT_GT(MC::triangle_normal(points[t[0]], points[t[1]], points[t[2]])[2], 0);
+  }
+}
+
 // The corner table of the sliver flips, built from the vertices' corner lists
 // a range of vertices at a time (to bound its memory): the same table for
 // any range size, an involution, and a refusal of a non-manifold edge.
