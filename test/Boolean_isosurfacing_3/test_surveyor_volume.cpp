@@ -2,6 +2,7 @@
 // the exact (Epeck) volume on generated and real meshes, and every bad input.
 
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/check_closed_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
 #include <CGAL/Aff_transformation_3.h>
@@ -27,6 +28,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -349,6 +352,110 @@ TEST(SurveyorVolumeErrors, OpenMesh)
   expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(points, open); }, "not closed");
   std::vector<Triangle> flipped = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 3, 2}};
   expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(points, flipped); }, "inconsistently oriented");
+}
+
+// The closedness check sorts most vertices' edges on a sorting network and
+// only the rest on the general count: it must agree with a plain map of edge
+// balances on every soup, closed or not, manifold or not, whatever the
+// numbering, and name the same first unbalanced edge.
+TEST(SurveyorVolumeErrors, ClosednessCheckAgreesWithAnEdgeCountOnMutatedSoups)
+{
+  typedef std::array<std::uint32_t, 3> Flat_triangle;
+  auto soup_of = [](const Mesh& mesh, std::uint32_t offset, std::vector<Flat_triangle>& soup) {
+    for(auto f : faces(mesh))
+    {
+      const auto h = halfedge(f, mesh);
+      soup.push_back({std::uint32_t(source(h, mesh)) + offset, std::uint32_t(target(h, mesh)) + offset,
+                      std::uint32_t(target(next(h, mesh), mesh)) + offset});
+    }
+  };
+  // Bases: a sphere (buckets of up to ~12 entries); a cone whose apex and
+  // base centre have 40 neighbours (general path); two boxes glued along an
+  // edge by sharing its vertices (a balanced non-manifold edge).
+  std::vector<std::pair<std::vector<Flat_triangle>, std::size_t>> bases(3);
+  soup_of(make_sphere(Point(0, 0, 0), 1.0, 2), 0, bases[0].first);
+  bases[0].second = num_vertices(make_sphere(Point(0, 0, 0), 1.0, 2));
+  {
+    auto& cone = bases[1].first;
+    const std::uint32_t sides = 40, apex = sides, centre = sides + 1;
+    for(std::uint32_t i = 0; i < sides; ++i)
+    {
+      cone.push_back({i, (i + 1) % sides, apex});
+      cone.push_back({(i + 1) % sides, i, centre});
+    }
+    bases[1].second = sides + 2;
+  }
+  {
+    const Mesh box = make_triangulated_box(Point(0, 0, 0), Point(1, 1, 1));
+    soup_of(box, 0, bases[2].first);
+    soup_of(box, 8, bases[2].first);
+    // The second box's vertex 8 + v becomes v for two vertices of an edge of
+    // the first (its reflection's orientation is irrelevant to the balance).
+    const auto h = halfedge(*faces(box).begin(), box);
+    const std::uint32_t a = std::uint32_t(source(h, box)), b = std::uint32_t(target(h, box));
+    for(auto& t : bases[2].first)
+      for(auto& v : t)
+        if(v == a + 8 || v == b + 8)
+          v -= 8;
+    bases[2].second = 16;
+  }
+  std::mt19937 random(20261204);
+  int closed = 0, open = 0;
+  for(int trial = 0; trial < 600; ++trial)
+  {
+    const auto& base = bases[std::size_t(trial) % bases.size()];
+    std::vector<Flat_triangle> soup = base.first;
+    const std::size_t n = base.second;
+    // Renumber the vertices (the buckets change), then mutate.
+    std::vector<std::uint32_t> order(n);
+    for(std::uint32_t v = 0; v < n; ++v)
+      order[v] = v;
+    std::shuffle(order.begin(), order.end(), random);
+    for(auto& t : soup)
+      for(auto& v : t)
+        v = order[v];
+    std::shuffle(soup.begin(), soup.end(), random);
+    const std::size_t pick = std::size_t(random() % soup.size());
+    switch(trial / int(bases.size()) % 5)
+    {
+    case 0: break;                                                          // unchanged
+    case 1: soup.erase(soup.begin() + std::ptrdiff_t(pick)); break;         // a hole
+    case 2: std::swap(soup[pick][0], soup[pick][1]); break;                 // one face flipped
+    case 3: soup.push_back(soup[pick]); break;                              // a face twice
+    case 4: soup.push_back({soup[pick][1], soup[pick][0], soup[pick][2]});  // a face and its
+            soup.push_back(soup[pick]);                                     // reverse: balanced
+            break;
+    }
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> balance;
+    for(const auto& t : soup)
+      for(int i = 0; i < 3; ++i)
+      {
+        const std::uint32_t a = t[i], b = t[(i + 1) % 3];
+        balance[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+      }
+    std::string first_unbalanced;
+    for(const auto& edge : balance)
+      if(edge.second != 0)
+      {
+        first_unbalanced =
+            "edge (" + std::to_string(edge.first.first) + ", " + std::to_string(edge.first.second) + ")";
+        break;
+      }
+    try
+    {
+      BI::internal::check_soup_is_closed(soup, n);
+      EXPECT_TRUE(first_unbalanced.empty()) << "trial " << trial << ": " << first_unbalanced << " not found";
+      ++closed;
+    }
+    catch(const BI::Open_mesh_error& error)
+    {
+      EXPECT_NE(std::string(error.what()).find(first_unbalanced + " is used"), std::string::npos)
+          << "trial " << trial << ": " << error.what() << " instead of " << first_unbalanced;
+      ++open;
+    }
+  }
+  EXPECT_EQ(closed, 240); // unchanged, and a face with its reverse: 2 of the 5 mutations
+  EXPECT_EQ(open, 360);
 }
 
 TEST(SurveyorVolumeErrors, NanAndInfiniteCoordinates)
