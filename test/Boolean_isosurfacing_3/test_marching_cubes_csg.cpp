@@ -1142,6 +1142,62 @@ TEST(McCsgApi, ComplementIsReportedAsOpenAtTheLatticeBoundary)
 // on every side is a shell 0.02 thick.  At spacing 1/16 most x-line
 // intervals through its two x-walls hold no lattice point; at 1/128 every
 // interval of the result is at least 0.02 > 2 spacings long.
+// The resolution check's components: a soup's by its vertex indices, a
+// mesh's by positions.  On a welded soup the two agree triangle for triangle;
+// two boxes in one soup that touch at a corner point without sharing its
+// index are two closed shells, and are judged as two.
+TEST(McCsgResolution, SoupComponentsFollowTheIndicesAndAgreeWithPositionsWhenWelded)
+{
+  auto soup_of = [](const std::vector<const Mesh*>& parts) {
+    BI::Triangle_soup_3 soup;
+    for(const Mesh* m : parts)
+    {
+      const std::uint32_t offset = std::uint32_t(soup.points.size());
+      for(const auto v : vertices(*m))
+        soup.points.push_back({m->point(v).x(), m->point(v).y(), m->point(v).z()});
+      for(const auto f : faces(*m))
+      {
+        const auto h = halfedge(f, *m);
+        soup.triangles.push_back({offset + std::uint32_t(source(h, *m)), offset + std::uint32_t(target(h, *m)),
+                                  offset + std::uint32_t(target(next(h, *m), *m))});
+      }
+    }
+    return soup;
+  };
+  Mesh sphere, torus;
+  BI::make_icosphere(sphere, Point(0, 0, 0), 1.0, 3);
+  BI::make_torus(torus, Point(3, 0, 0), 1.0, 0.3, 40, 20);
+  const Mesh box = BI::test::make_box<Mesh>(Point(-3, -1, -1), Point(-2, 0, 0));
+  const std::vector<BI::Triangle_soup_3> welded{soup_of({&sphere, &torus}), soup_of({&box})};
+  std::size_t read = 0;
+  const std::vector<BI::internal::Lattice_triangle> triangles =
+      BI::Lattice_classifier_3::read_meshes(welded, read);
+  namespace MC = BI::internal::Marching_cubes_csg;
+  const MC::Component_labels by_index = MC::label_input_components(welded, triangles);
+  const MC::Component_labels by_position = MC::label_components(triangles);
+  ASSERT_EQ(by_index.components.size(), 3u);
+  ASSERT_EQ(by_position.components.size(), 3u);
+  EXPECT_EQ(by_index.of_triangle, by_position.of_triangle);
+  for(std::size_t c = 0; c < 3; ++c)
+  {
+    EXPECT_EQ(by_index.components[c].mesh, by_position.components[c].mesh);
+    EXPECT_EQ(by_index.components[c].number, by_position.components[c].number);
+    EXPECT_EQ(by_index.components[c].triangles, by_position.components[c].triangles);
+    EXPECT_EQ(by_index.components[c].volume, by_position.components[c].volume);
+    EXPECT_EQ(by_index.components[c].area, by_position.components[c].area);
+  }
+  EXPECT_NEAR(by_index.components[2].volume, 1.0, 1e-12);
+
+  // Corner (0, 0, 0) of both boxes, twice in the soup.
+  const Mesh low = BI::test::make_box<Mesh>(Point(-1, -1, -1), Point(0, 0, 0));
+  const Mesh high = BI::test::make_box<Mesh>(Point(0, 0, 0), Point(1, 1, 1));
+  const std::vector<BI::Triangle_soup_3> touching{soup_of({&low, &high})};
+  const std::vector<BI::internal::Lattice_triangle> touching_triangles =
+      BI::Lattice_classifier_3::read_meshes(touching, read);
+  EXPECT_EQ(MC::label_input_components(touching, touching_triangles).components.size(), 2u);
+  EXPECT_EQ(MC::label_components(touching_triangles).components.size(), 1u);
+}
+
 TEST(McCsgResolution, ThinShellOfADifferenceIsMeasuredOnTheResult)
 {
   const Mesh outer = BI::test::make_box<Mesh>(Point(0, 0, 0), Point(1, 1, 1));

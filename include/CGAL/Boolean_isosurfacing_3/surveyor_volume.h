@@ -283,9 +283,11 @@ surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters:
  * compile.
  *
  * The soup is closed when every directed edge (a, b) is matched by as many
- * edges (b, a); checking that sorts the 3n edges, so this overload costs
- * O(n log n), unlike the mesh overload (O(n), its connectivity already says
- * whether it is closed).
+ * edges (b, a); checking that buckets the 3n edges by their smaller endpoint
+ * (a counting sort) and sorts each vertex's few edges: linear time for bounded
+ * vertex degrees, but it reads and writes the edges twice, so on large inputs
+ * this overload costs about twice the mesh overload, whose connectivity already
+ * says whether it is closed.
  *
  * \throws Empty_input_error, Non_triangle_face_error (a polygon of another
  * size), Invalid_input_error (an index out of range or repeated in a

@@ -947,7 +947,8 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   std::vector<Lattice_triangle> input_triangles = read_csg_meshes(meshes, read_meshes, np);
   const bool check_resolution = choose_parameter(get_parameter(np, internal_np::resolution_check), true);
   const Marching_cubes_csg::Component_labels components =
-      check_resolution ? Marching_cubes_csg::label_components(input_triangles) : Marching_cubes_csg::Component_labels();
+      check_resolution ? Marching_cubes_csg::label_input_components(meshes, input_triangles)
+                       : Marching_cubes_csg::Component_labels();
   const Marching_cubes_csg::Feature_settings features = feature_settings(np);
   const std::vector<Marching_cubes_csg::Triangle_tangent> tangents =
       features.enabled ? Marching_cubes_csg::triangle_tangents(input_triangles)

@@ -21,6 +21,8 @@
 #include <CGAL/Boolean_isosurfacing_3/Lattice_classifier_3.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Accurate_sum.h>
+#include <CGAL/Boolean_isosurfacing_3/IO/Triangle_soup_3.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Mesh_triangles_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Perturbed_line_predicates_3.h>
 
 #include <algorithm>
@@ -31,6 +33,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -65,9 +68,9 @@ namespace Marching_cubes_csg {
 
 // Per input triangle, its component; per component, its mesh, number within
 // the mesh, size, volume, area and bounding box.  Triangles are joined by
-// shared vertex positions (the readers weld equal points), so two shells
-// touching at a point count as one component, which only makes the check
-// coarser there.
+// shared vertices: the indices of a soup, or equal positions in a mesh given
+// as a FaceGraph (there two shells touching at a point count as one
+// component, which only makes the check coarser).
 struct Component_labels
 {
   std::vector<std::uint32_t> of_triangle;
@@ -84,6 +87,14 @@ struct Component_labels
   std::vector<Component> components;
 };
 
+// The labels of `triangles` whose corner c is vertex `vertex_of_corner[c]`
+// (numbers below `number_of_vertices`, distinct between meshes).
+inline Component_labels label_components(const std::vector<Lattice_triangle>& triangles,
+                                         const std::vector<std::uint32_t>& vertex_of_corner,
+                                         std::size_t number_of_vertices);
+
+// Joins the triangles by shared (position, mesh): for meshes whose vertices
+// the caller numbers in another way (any FaceGraph).
 inline Component_labels label_components(const std::vector<Lattice_triangle>& triangles)
 {
   // Weld equal (position, mesh) corners with an open-addressing table of
@@ -108,7 +119,8 @@ inline Component_labels label_components(const std::vector<Lattice_triangle>& tr
     table_size *= 2;
   const std::uint32_t empty = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> table(table_size, empty); // a corner number, or empty
-  std::vector<std::uint32_t> vertex_of_corner(corners), parent;
+  std::vector<std::uint32_t> vertex_of_corner(corners);
+  std::uint32_t vertices = 0;
   for(std::size_t c = 0; c < corners; ++c)
   {
     std::size_t slot = hash(c) & (table_size - 1);
@@ -118,8 +130,7 @@ inline Component_labels label_components(const std::vector<Lattice_triangle>& tr
       if(other == empty)
       {
         table[slot] = std::uint32_t(c);
-        vertex_of_corner[c] = std::uint32_t(parent.size());
-        parent.push_back(std::uint32_t(parent.size()));
+        vertex_of_corner[c] = vertices++;
         break;
       }
       const std::array<double, 3>& p = point_of(c);
@@ -132,6 +143,16 @@ inline Component_labels label_components(const std::vector<Lattice_triangle>& tr
     }
   }
   std::vector<std::uint32_t>().swap(table);
+  return label_components(triangles, vertex_of_corner, vertices);
+}
+
+inline Component_labels label_components(const std::vector<Lattice_triangle>& triangles,
+                                         const std::vector<std::uint32_t>& vertex_of_corner,
+                                         std::size_t number_of_vertices)
+{
+  const std::uint32_t empty = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> parent(number_of_vertices);
+  std::iota(parent.begin(), parent.end(), std::uint32_t(0));
   auto find = [&](std::uint32_t v) {
     while(parent[v] != v)
     {
@@ -203,6 +224,33 @@ inline Component_labels label_components(const std::vector<Lattice_triangle>& tr
                                                 (n[0] == 0 && n[1] == 0 ? 4 : 0));
   }
   return labels;
+}
+
+// The components of the input meshes: soups (what the tools read) by their
+// vertex indices, which the closedness check has already matched edge by
+// edge, so each component is a closed shell; other meshes by position.
+template <typename TriangleMeshRange>
+Component_labels label_input_components(const TriangleMeshRange& meshes, const std::vector<Lattice_triangle>& triangles)
+{
+  if constexpr(std::is_same<Mesh_of_range<TriangleMeshRange>, Triangle_soup_3>::value)
+  {
+    std::vector<std::uint32_t> vertex_of_corner;
+    vertex_of_corner.reserve(3 * triangles.size());
+    std::size_t offset = 0;
+    for(const auto& mesh : meshes)
+    {
+      const Triangle_soup_3& soup = unwrap_mesh(mesh);
+      if(offset + soup.points.size() >= std::numeric_limits<std::uint32_t>::max())
+        return label_components(triangles);
+      for(const Triangle_soup_3::Triangle& t : soup.triangles)
+        for(int i = 0; i < 3; ++i)
+          vertex_of_corner.push_back(std::uint32_t(offset + t[i]));
+      offset += soup.points.size();
+    }
+    if(vertex_of_corner.size() == 3 * triangles.size())
+      return label_components(triangles, vertex_of_corner, offset);
+  }
+  return label_components(triangles);
 }
 
 // The components of `labels` that `classifier`'s lattice does not resolve:
