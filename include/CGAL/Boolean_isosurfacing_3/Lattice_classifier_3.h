@@ -9,6 +9,7 @@
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Huge_pages.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Mesh_triangles_3.h>
@@ -536,12 +537,15 @@ private:
   };
 
   // The lines along an axis that may cross a triangle: u0 <= u < u1, v0 <= v < v1.
+  // Trivial (no member initializers): the array of a block per triangle is
+  // not zero-filled before line_block() writes every element.
   struct Line_block
   {
-    std::uint32_t u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    std::uint32_t u0, u1, v0, v1;
     bool empty() const { return u0 >= u1 || v0 >= v1; }
     std::size_t size() const { return empty() ? 0 : std::size_t(u1 - u0) * std::size_t(v1 - v0); }
   };
+  typedef std::vector<Line_block, internal::Default_init_allocator<Line_block>> Line_blocks;
 
   Lattice_classifier_3(const Regular_lattice_3& lattice, std::size_t number_of_meshes)
     : m_lattice(lattice), m_number_of_meshes(number_of_meshes)
@@ -552,7 +556,7 @@ private:
   Line_block line_block(const internal::Lattice_triangle& t, int axis,
                         const std::array<std::vector<double>, 3>& coordinates) const
   {
-    Line_block b;
+    Line_block b{0, 0, 0, 0};
     if(t.projected_orientation(axis) == 0)
       return b;
     const int u = internal::line_u_axis(axis), v = internal::line_v_axis(axis);
@@ -594,7 +598,7 @@ private:
 
     // Line blocks of every triangle for the three axes, and the memory
     // estimate, before the big allocations.
-    std::array<std::vector<Line_block>, 3> blocks;
+    std::array<Line_blocks, 3> blocks;
     std::array<std::size_t, 3> candidates{{0, 0, 0}}, binned{{0, 0, 0}};
     for(int axis = 0; axis < 3; ++axis)
     {
@@ -634,7 +638,7 @@ private:
       const auto start = std::chrono::steady_clock::now();
       process_axis<ConcurrencyTag>(axis, triangles, blocks[axis], coordinates,
                                    progress.part(weights[axis], weights[axis + 1]));
-      std::vector<Line_block>().swap(blocks[axis]);
+      Line_blocks().swap(blocks[axis]);
       m_seconds[axis] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   }
@@ -756,7 +760,7 @@ private:
 
   template <typename ConcurrencyTag>
   void process_axis(int axis, const std::vector<internal::Lattice_triangle>& triangles,
-                    const std::vector<Line_block>& blocks, const std::array<std::vector<double>, 3>& coordinates,
+                    const Line_blocks& blocks, const std::array<std::vector<double>, 3>& coordinates,
                     const internal::Progress& progress)
   {
     const std::array<std::size_t, 3>& n = m_lattice.number_of_points();
