@@ -105,7 +105,7 @@ namespace Boolean_isosurfacing {
  *   \cgalParamNBegin{sliver_edge_length}
  *     \cgalParamDescription{edges between two edge points shorter than this many cells are
  *       collapsed (link condition, no triangle turned over); in [0, 0.5)}
- *     \cgalParamType{`double`} \cgalParamDefault{0.1 with sharp features, 0 without}
+ *     \cgalParamType{`double`} \cgalParamDefault{0.15 with sharp features, 0 without}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{sharp_feature_output}
  *     \cgalParamDescription{receives the crease edges and corner vertices (cleared first)}

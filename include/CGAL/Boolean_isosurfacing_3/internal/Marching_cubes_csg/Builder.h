@@ -981,7 +981,7 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   const double seconds_yz = classifier.seconds(1) + classifier.seconds(2);
   statistics.seconds_classification = seconds_since(start) - seconds_yz;
 
-  const double sliver = choose_parameter(get_parameter(np, internal_np::sliver_edge_length), features.enabled ? 0.1 : 0.0);
+  const double sliver = choose_parameter(get_parameter(np, internal_np::sliver_edge_length), features.enabled ? 0.15 : 0.0);
   if(!(sliver >= 0 && sliver < 0.5))
     throw Invalid_input_error("sliver_edge_length must be in [0, 0.5) cells, got " + std::to_string(sliver));
 
