@@ -288,6 +288,54 @@ TEST(SurveyorVolume, AvxAndSse2KernelsGiveTheSameBits)
   }
 }
 
+// A thin-walled part turned off the axes (a hollow box, walls 2 % of its
+// size): its permanents are many times its volume, so the double bound
+// fails; the long double tier (where long double is wider) certifies it
+// without the exact sum, which would visit the terms a second time.
+TEST(SurveyorVolume, ThinRotatedWallsAreCertifiedInLongDoubleWithoutTheExactSum)
+{
+  Mesh shell = BI::test::make_box<Mesh>(Point(0, 0, 0), Point(1, 1, 1));
+  Mesh inner = BI::test::make_box<Mesh>(Point(0.02, 0.02, 0.02), Point(0.98, 0.98, 0.98));
+  PMP::reverse_face_orientations(inner);
+  CGAL::copy_face_graph(inner, shell);
+  typedef CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  shell = BI::test::moved(shell, Point(0.5, 0.5, 0.5), Vector(1, 2, 3), 0.4, Vector(3.1, -2.7, 0.9));
+
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for(auto v : vertices(shell))
+    points.push_back({shell.point(v).x(), shell.point(v).y(), shell.point(v).z()});
+  for(auto f : faces(shell))
+  {
+    auto h = halfedge(f, shell);
+    triangles.push_back({std::uint32_t(target(h, shell)), std::uint32_t(target(next(h, shell), shell)),
+                         std::uint32_t(target(prev(h, shell), shell))});
+  }
+  const std::array<double, 3> c = BI::internal::finite_centroid(points);
+  BI::internal::Tetrahedra_pair_sum pair_sum(c[0], c[1], c[2]);
+  pair_sum.add(triangles.size(), [&](std::size_t i, int k) { return points[triangles[i][std::size_t(k)]].data(); });
+  double s, permanents;
+  std::size_t n;
+  pair_sum.finish(s, permanents, n);
+  EXPECT_GT(permanents, 4 * std::abs(s)) << "the double bound would pass: the test no longer tests the tier";
+
+  int visits = 0;
+  const double volume = BI::internal::certified_or_exact_sum(s, permanents, n, c[0], c[1], c[2], [&](const auto& f) {
+    ++visits;
+    for(const auto& t : triangles)
+    {
+      const auto &a = points[t[0]], &b = points[t[1]], &d = points[t[2]];
+      f(a[0], a[1], a[2], b[0], b[1], b[2], d[0], d[1], d[2]);
+    }
+  });
+  if(std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
+    EXPECT_EQ(visits, 1) << "the exact sum ran";
+  const double exact = exact_volume(shell);
+  EXPECT_LT(relative_error(volume, exact), 4e-15) << volume << " against " << exact;
+  EXPECT_NEAR(exact, 1 - 0.96 * 0.96 * 0.96, 1e-12);
+  EXPECT_LT(relative_error(BI::surveyor_volume(shell), exact), 4e-15);
+}
+
 // ----------------------------------------------------------- other models
 
 TEST(SurveyorVolume, WorksOnPolyhedron3AndWithAVertexPointMap)

@@ -136,7 +136,9 @@ void check_orientation_of_result(const FT& volume, bool signed_result)
  *
  * Accuracy: for double coordinates the sum carries a certified error bound
  * (the orient3d bound per term, compensated summation); when that bound
- * exceeds 2^-48 of the result, the sum is recomputed exactly and rounded
+ * exceeds 2^-48 of the result, the sum is recomputed in `long double` with
+ * its own bound (where `long double` is wider than double, as on x86-64),
+ * and if that bound exceeds 2^-49 of the result too, exactly, and rounded
  * once.  So the relative error is below 4e-15 in every case, also far from
  * the origin and for sums that cancel.  For other number types the kernel's
  * `Compute_volume_3` is summed in a cascade (exact for exact kernels).
