@@ -815,6 +815,55 @@ TEST(CsgFeaturesTable, LaterCollapsePassesNeedOnlyTheEdgesNearThePreviousMoves)
   }
 }
 
+// A pass with many candidate edges (a fine lattice) takes them in batches,
+// each with the rows of its own ends, built from the triangles as the
+// earlier batches left them.  The batches only bound the memory: on real
+// outputs with thousands of candidates, batches of 500 must collapse what
+// one batch does, and leave a closed 2-manifold.  (Not a proof: a later
+// batch's rows see the triangles an earlier collapse moved, which the
+// single batch's fold test does not.)
+TEST(CsgFeaturesTable, CollapseBatchesCollapseWhatOneBatchDoes)
+{
+  const std::string dir = std::string(BISO_SHARED_DATA_DIR) + "/meshes/";
+  Mesh bunny, fandisk;
+  BI::IO::read_closed_triangle_mesh(dir + "bunny_hoppe.off", bunny);
+  BI::IO::read_closed_triangle_mesh(dir + "fandisk.off", fandisk);
+  const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh b = rotated(make_box(Point(0.3, 0.3, 0.3), Point(1.4, 1.3, 1.2)), Point(0.5, 0.5, 0.5), Vector(0, 1, 1), 0.3);
+  const Csg_run runs[] = {run_csg({a, b}, "A & !B", 24, false, 0),
+                          run_csg({bunny, BI::test::moved_copy(bunny)}, "A | B", 48, false, 0),
+                          run_csg({fandisk, BI::test::moved_copy(fandisk)}, "A & !B", 200, false, 0)};
+  std::size_t batched_passes = 0;
+  for(const Csg_run& plain : runs)
+  {
+    std::vector<MC::Vector_3d> points;
+    for(const Point& p : plain.points)
+      points.push_back({{p.x(), p.y(), p.z()}});
+    for(const double cells : {0.15, 0.35})
+    {
+      std::vector<Tri> one = plain.triangles, batched = plain.triangles;
+      MC::Collapse_marks one_marks, batched_marks;
+      one_marks.removed.assign(points.size(), 0);
+      batched_marks.removed = one_marks.removed;
+      for(std::size_t pass = 0; pass < 4; ++pass)
+      {
+        const std::size_t n = MC::collapse_short_edges_once(points, one, points.size(), cells * plain.spacing, one_marks,
+                                                            std::size_t(1) << 30);
+        const std::size_t m = MC::collapse_short_edges_once(points, batched, points.size(), cells * plain.spacing,
+                                                            batched_marks, 500);
+        batched_passes += m > 500 ? 1 : 0; // more than 500 candidates: several batches
+        ASSERT_EQ(n, m) << "pass " << pass << ", " << cells << " cells";
+        ASSERT_EQ(one, batched) << "pass " << pass << ", " << cells << " cells";
+        if(n == 0)
+          break;
+      }
+      EXPECT_EQ(one_marks.removed, batched_marks.removed);
+      ASSERT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(batched));
+    }
+  }
+  EXPECT_GE(batched_passes, 3u); // passes that really had several batches
+}
+
 // The Lawson flips alone, on plain Marching Cubes output (no collapse, no
 // flip done yet) of a box minus a box: only coplanar quadrilaterals may flip
 // (max_deviation 1e-12 r), so the volume must not change, while the smallest

@@ -150,7 +150,8 @@ public:
   Marching_cubes_csg_builder(const Lattice_classifier_3& classifier, const Boolean_expression& expression,
                              const Feature_settings& features, const std::vector<Triangle_tangent>& tangents)
     : m_classifier(classifier), m_lattice(classifier.lattice()), m_inside(expression),
-      m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents), m_empty_state(m_inside(0))
+      m_n(m_lattice.number_of_points()), m_features(features), m_tangents(tangents), m_normals(tangents),
+      m_empty_state(m_inside(0))
   {}
 
   // Bytes per lattice plane and per output vertex that the builder
@@ -202,6 +203,7 @@ public:
   // vertex (the mesh of the crossing it is on); the face labels of the output.
   void record_vertex_meshes(std::vector<std::uint8_t>& meshes) { m_vertex_meshes = &meshes; }
   static constexpr std::uint8_t no_mesh = 255;
+  static constexpr std::size_t no_normal = std::size_t(-1);
 
   // The edge ids 3 * (i + nx * j) + axis of the vertices of plane k, in
   // vertex order (for the welding of slab ranges).
@@ -269,7 +271,7 @@ public:
         if(e.cos_dihedral < m_features.cos_feature_angle)
           soup_creases.push_back({{e.v0, e.v1}});
       statistics.crease_edges = soup_creases.size();
-      std::vector<Vector_3d>().swap(m_normals);
+      m_normals.clear();
     }
   }
 
@@ -716,18 +718,18 @@ private:
           }
         }
         points[id] = vertex_position(crossings, i, j, k, axis, from_low, inside_mask,
-                                     m_features.enabled ? &m_normals[id] : nullptr,
+                                     m_features.enabled ? id : no_normal,
                                      m_vertex_meshes != nullptr ? &(*m_vertex_meshes)[id] : nullptr);
       }
     }
   }
 
   // The vertex of a lattice edge with these crossings whose inside end has
-  // mask `mask`, and (if `normal` is not null) the outward unit normal of the
-  // input triangle it lies on.
+  // mask `mask`; records the outward unit normal of the input triangle it
+  // lies on as that of vertex `normal` (unless it is `no_normal`).
   std::array<double, 3> vertex_position(const Lattice_classifier_3::Crossing_range& crossings, std::size_t i,
                                         std::size_t j, std::size_t k, int axis, bool from_low, std::uint64_t mask,
-                                        Vector_3d* normal, std::uint8_t* mesh) const
+                                        std::size_t normal, std::uint8_t* mesh)
   {
     const std::size_t c = csg_edge_crossing(crossings.begin(), crossings.size(), from_low, mask, m_inside);
     if(c == crossings.size())
@@ -735,8 +737,8 @@ private:
                              "of its ends (this is a bug)");
     std::array<double, 3> p{{m_lattice.coordinate(0, i), m_lattice.coordinate(1, j), m_lattice.coordinate(2, k)}};
     p[axis] = crossings[c].position;
-    if(normal != nullptr)
-      *normal = Marching_cubes_csg::outward_normal(m_tangents[crossings[c].triangle], axis, from_low);
+    if(normal != no_normal)
+      m_normals.set(normal, crossings[c].triangle, axis, from_low);
     if(mesh != nullptr)
       *mesh = std::uint8_t(crossings[c].mesh);
     return p;
@@ -865,7 +867,7 @@ private:
   std::vector<std::size_t> m_vertex_offset;
   Feature_settings m_features;
   const std::vector<Triangle_tangent>& m_tangents;
-  std::vector<Vector_3d> m_normals; // outward normal of each edge vertex (features only)
+  Marching_cubes_csg::Edge_vertex_normals m_normals; // of each edge vertex (features only)
   std::vector<std::uint8_t>* m_vertex_meshes = nullptr;
   bool m_empty_state;               // the state of a point inside no mesh
 };

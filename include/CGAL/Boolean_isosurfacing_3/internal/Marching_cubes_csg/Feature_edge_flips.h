@@ -45,8 +45,8 @@ struct Flipped_edge
 /// the triangles of the form (a, b, apex) with `a`, `b` edge points (indices
 /// below `normals.size()`) and `apex` a feature vertex.  Appends the new
 /// apex-apex edges to `flipped`, in a deterministic order.
-template <typename Triangle>
-void flip_feature_edges(const std::vector<Vector_3d>& points, const std::vector<Vector_3d>& normals,
+template <typename Triangle, typename Normals>
+void flip_feature_edges(const std::vector<Vector_3d>& points, const Normals& normals,
                         std::vector<Triangle>& triangles, const std::vector<std::size_t>& fans,
                         std::vector<Flipped_edge>& flipped)
 {
@@ -86,8 +86,8 @@ void flip_feature_edges(const std::vector<Vector_3d>& points, const std::vector<
       continue; // not oppositely oriented: cannot happen on a closed, oriented output
     const Vector_3d n1 = triangle_normal(points[a], points[f2], points[f1]);
     const Vector_3d n2 = triangle_normal(points[f2], points[b], points[f1]);
-    const Vector_3d& na = normals[a];
-    const Vector_3d& nb = normals[b];
+    const Vector_3d na = normals[a];
+    const Vector_3d nb = normals[b];
     const Vector_3d nab{{na[0] + nb[0], na[1] + nb[1], na[2] + nb[2]}};
     if(!(dot3(n1, na) > 0 && dot3(n2, nb) > 0 && dot3(n1, nab) > 0 && dot3(n2, nab) > 0))
       continue;

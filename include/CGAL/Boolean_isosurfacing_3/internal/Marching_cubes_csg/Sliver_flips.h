@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -92,18 +93,20 @@ struct Sliver_flip_settings
 /// replaces needed about 48 bytes per edge (4.7 GB at 2048 cells).  The
 /// vertices' corner lists it is built from take about `max_star_corners`
 /// entries at a time (ranges of a power of two vertices), the ranges in
-/// parallel with `Parallel_tag`.  By default (0), 2^16 entries or 1/32 of
+/// parallel with `Parallel_tag`.  By default (0), 2^16 entries or 1/128 of
 /// the corners, whichever is more: each range's lists then reuse the pages
 /// the previous range freed (fresh pages cost a page fault each: 3 ms of
-/// the 36 ms feature path of tray_bottom at 128 cells), and few ranges hold
-/// the feature vertices, whose triangles are everywhere.
+/// the 36 ms feature path of tray_bottom at 128 cells), few ranges hold the
+/// feature vertices, whose triangles are everywhere, and the lists of the
+/// ranges in work add little to the table at the memory peak of the
+/// feature path (1/32 was 60 MB more at 2048 cells on two threads).
 template <typename ConcurrencyTag = Sequential_tag, typename Index, typename Triangle>
 bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>& triangles, std::vector<Index>& opposite,
                       std::size_t max_star_corners = 0)
 {
   const std::size_t corners = 3 * triangles.size();
   if(max_star_corners == 0)
-    max_star_corners = (std::max)(std::size_t(1) << 16, corners / 32);
+    max_star_corners = (std::max)(std::size_t(1) << 16, corners / 128);
   const Index none = Index(-1);
   const auto next = [](std::size_t c) { return c - c % 3 + (c + 1) % 3; };
   const auto previous = [](std::size_t c) { return c - c % 3 + (c + 2) % 3; };
@@ -260,7 +263,10 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
   const std::size_t max_flips = 4 * triangles.size();
   // Tries the edge facing corner c1 (c1 = c in t1 = (a, b, c); its twin
   // faces d in t2 = (b, a, d)); on success the four outer edges are queued.
-  std::vector<Index> queued;
+  // A first-in first-out queue in blocks: the rounds of before in the same
+  // order, without a second vector (and its doubling) beside the corner
+  // table at the memory peak of the feature path.
+  std::deque<Index> queued;
   const auto try_flip = [&](std::size_t c1) {
     const std::size_t c2 = std::size_t(opposite[c1]);
     const std::size_t t1 = c1 / 3, t2 = c2 / 3;
@@ -330,13 +336,11 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
       for(std::size_t i = 0; i < 3 && flips < max_flips; ++i)
         try_flip(3 * t + i);
   }
-  std::vector<Index> round;
   while(!queued.empty() && flips < max_flips)
   {
-    round.swap(queued);
-    queued.clear();
-    for(std::size_t i = 0; i < round.size() && flips < max_flips; ++i)
-      try_flip(round[i]);
+    const std::size_t c = std::size_t(queued.front());
+    queued.pop_front();
+    try_flip(c);
   }
   return flips;
 }
