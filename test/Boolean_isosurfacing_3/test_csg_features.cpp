@@ -767,6 +767,32 @@ TEST(CsgFeaturesTable, CornerTableDoesNotDependOnTheStarRanges)
   EXPECT_FALSE(MC::opposite_corners<CGAL::Parallel_tag>(plain.points.size(), three, parallel, 7));
 }
 
+// Plain Marching Cubes outputs (no feature, no sliver pass) on which the
+// sliver passes have thousands of edges to work on: a box minus a rotated
+// box, bunny and fandisk against their moved copies.
+std::vector<Csg_run> plain_runs_for_sliver_passes()
+{
+  const std::string dir = std::string(BISO_SHARED_DATA_DIR) + "/meshes/";
+  Mesh bunny, fandisk;
+  BI::IO::read_closed_triangle_mesh(dir + "bunny_hoppe.off", bunny);
+  BI::IO::read_closed_triangle_mesh(dir + "fandisk.off", fandisk);
+  const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh b = rotated(make_box(Point(0.3, 0.3, 0.3), Point(1.4, 1.3, 1.2)), Point(0.5, 0.5, 0.5), Vector(0, 1, 1), 0.3);
+  std::vector<Csg_run> runs;
+  runs.push_back(run_csg({a, b}, "A & !B", 24, false, 0));
+  runs.push_back(run_csg({bunny, BI::test::moved_copy(bunny)}, "A | B", 48, false, 0));
+  runs.push_back(run_csg({fandisk, BI::test::moved_copy(fandisk)}, "A & !B", 200, false, 0));
+  return runs;
+}
+
+std::vector<MC::Vector_3d> points_of(const Csg_run& run)
+{
+  std::vector<MC::Vector_3d> points;
+  for(const Point& p : run.points)
+    points.push_back({{p.x(), p.y(), p.z()}});
+  return points;
+}
+
 // Collapse passes after the first try only the edges with an end near the
 // previous pass's moves.  On real outputs, with a long "short" length so
 // that the passes collapse thousands of edges, they must collapse exactly
@@ -776,20 +802,10 @@ TEST(CsgFeaturesTable, CornerTableDoesNotDependOnTheStarRanges)
 // runs tried, up to 68,845 collapses.)
 TEST(CsgFeaturesTable, LaterCollapsePassesNeedOnlyTheEdgesNearThePreviousMoves)
 {
-  const std::string dir = std::string(BISO_SHARED_DATA_DIR) + "/meshes/";
-  Mesh bunny, fandisk;
-  BI::IO::read_closed_triangle_mesh(dir + "bunny_hoppe.off", bunny);
-  BI::IO::read_closed_triangle_mesh(dir + "fandisk.off", fandisk);
-  const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
-  const Mesh b = rotated(make_box(Point(0.3, 0.3, 0.3), Point(1.4, 1.3, 1.2)), Point(0.5, 0.5, 0.5), Vector(0, 1, 1), 0.3);
-  const Csg_run runs[] = {run_csg({a, b}, "A & !B", 24, false, 0),
-                          run_csg({bunny, BI::test::moved_copy(bunny)}, "A | B", 48, false, 0),
-                          run_csg({fandisk, BI::test::moved_copy(fandisk)}, "A & !B", 200, false, 0)};
+  const std::vector<Csg_run> runs = plain_runs_for_sliver_passes();
   for(const Csg_run& plain : runs)
   {
-    std::vector<MC::Vector_3d> points;
-    for(const Point& p : plain.points)
-      points.push_back({{p.x(), p.y(), p.z()}});
+    const std::vector<MC::Vector_3d> points = points_of(plain);
     for(const double cells : {0.1, 0.35})
     {
       std::vector<Tri> near = plain.triangles, every = plain.triangles;
@@ -824,21 +840,11 @@ TEST(CsgFeaturesTable, LaterCollapsePassesNeedOnlyTheEdgesNearThePreviousMoves)
 // single batch's fold test does not.)
 TEST(CsgFeaturesTable, CollapseBatchesCollapseWhatOneBatchDoes)
 {
-  const std::string dir = std::string(BISO_SHARED_DATA_DIR) + "/meshes/";
-  Mesh bunny, fandisk;
-  BI::IO::read_closed_triangle_mesh(dir + "bunny_hoppe.off", bunny);
-  BI::IO::read_closed_triangle_mesh(dir + "fandisk.off", fandisk);
-  const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
-  const Mesh b = rotated(make_box(Point(0.3, 0.3, 0.3), Point(1.4, 1.3, 1.2)), Point(0.5, 0.5, 0.5), Vector(0, 1, 1), 0.3);
-  const Csg_run runs[] = {run_csg({a, b}, "A & !B", 24, false, 0),
-                          run_csg({bunny, BI::test::moved_copy(bunny)}, "A | B", 48, false, 0),
-                          run_csg({fandisk, BI::test::moved_copy(fandisk)}, "A & !B", 200, false, 0)};
+  const std::vector<Csg_run> runs = plain_runs_for_sliver_passes();
   std::size_t batched_passes = 0;
   for(const Csg_run& plain : runs)
   {
-    std::vector<MC::Vector_3d> points;
-    for(const Point& p : plain.points)
-      points.push_back({{p.x(), p.y(), p.z()}});
+    const std::vector<MC::Vector_3d> points = points_of(plain);
     for(const double cells : {0.15, 0.35})
     {
       std::vector<Tri> one = plain.triangles, batched = plain.triangles;
@@ -873,9 +879,7 @@ TEST(CsgFeaturesTable, SliverFlipsRaiseTheSmallestAngleOnFlatFaces)
   const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
   const Mesh b = rotated(make_box(Point(0.3, 0.3, 0.3), Point(1.4, 1.3, 1.2)), Point(0.5, 0.5, 0.5), Vector(0, 1, 1), 0.3);
   const Csg_run plain = run_csg({a, b}, "A & !B", 40, false);
-  std::vector<MC::Vector_3d> points;
-  for(const Point& p : plain.points)
-    points.push_back({{p.x(), p.y(), p.z()}});
+  const std::vector<MC::Vector_3d> points = points_of(plain);
   std::vector<Tri> triangles = plain.triangles;
   const auto min_angle = [&](const std::vector<Tri>& ts) {
     double best = 180;

@@ -341,7 +341,8 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
     ++collapses;
     return true;
   };
-  const std::size_t batches = (candidates.size() + batch_size - 1) / (std::max)(batch_size, std::size_t(1));
+  const std::size_t per_batch = (std::max)(batch_size, std::size_t(1));
+  const std::size_t batches = (candidates.size() + per_batch - 1) / per_batch;
   for(std::size_t b = 0; b < batches; ++b)
   {
     const Edge* const batch_begin = candidates.data() + candidates.size() * b / batches;

@@ -69,12 +69,17 @@ inline std::vector<Triangle_tangent> triangle_tangents(const std::vector<Lattice
 /// the output goes from inside to outside in the direction of increasing
 /// coordinate iff `increasing`: the crossed triangle is not parallel to the
 /// edge, so the exact sign of its normal's component along `axis` says which
-/// of its two sides faces the outside.
+/// of its two sides faces the outside.  Whether that is `-t.normal`:
+inline bool outward_normal_is_reversed(const Triangle_tangent& t, int axis, bool increasing)
+{
+  return (t.sign[axis] > 0) != increasing;
+}
+
+/// The outward unit normal itself.
 inline Vector_3d outward_normal(const Triangle_tangent& t, int axis, bool increasing)
 {
-  const bool flip = (t.sign[axis] > 0) != increasing;
   Vector_3d n = t.normal;
-  if(flip)
+  if(outward_normal_is_reversed(t, axis, increasing))
     for(int a = 0; a < 3; ++a)
       n[a] = -n[a];
   return n;
@@ -105,7 +110,7 @@ public:
   void set(std::size_t v, std::uint32_t t, int axis, bool increasing)
   {
     m_triangle[v] = t;
-    m_flip[v] = ((*m_tangents)[t].sign[axis] > 0) != increasing;
+    m_flip[v] = outward_normal_is_reversed((*m_tangents)[t], axis, increasing);
   }
   Vector_3d operator[](std::size_t v) const
   {
