@@ -15,6 +15,7 @@
 // stderr (doc/Boolean_isosurfacing_3/tools.md).
 
 #include "cli.h"
+#include "huge_page_heap.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/pts.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_point_samples.h>
@@ -433,6 +434,7 @@ int run(Tool& tool, const Options& options)
 
 int main(int argc, char** argv)
 {
+  biso_tools::restart_with_huge_page_heap(argv);
   Tool tool("contour", description);
   Options options;
   Option_text text;

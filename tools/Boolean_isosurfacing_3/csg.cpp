@@ -18,6 +18,7 @@
 // stderr (doc/Boolean_isosurfacing_3/tools.md).
 
 #include "cli.h"
+#include "huge_page_heap.h"
 #include "csg_options.h"
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
@@ -812,6 +813,7 @@ int csg_distributed_main(int argc, char** argv); // csg_distributed.cpp
 
 int main(int argc, char** argv)
 {
+  biso_tools::restart_with_huge_page_heap(argv);
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--distributed")
     {

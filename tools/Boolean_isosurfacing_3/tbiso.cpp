@@ -19,6 +19,7 @@
 // (tbiso_output.h) and the summary (tbiso_summary.h).
 
 #include "cli.h"
+#include "huge_page_heap.h"
 #include "tbiso_extract.h"
 #include "tbiso_input.h"
 #include "tbiso_options.h"
@@ -246,6 +247,7 @@ int tbiso_distributed_main(int argc, char** argv); // tbiso_distributed.cpp
 
 int main(int argc, char** argv)
 {
+  biso_tools::restart_with_huge_page_heap(argv);
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--distributed")
     {

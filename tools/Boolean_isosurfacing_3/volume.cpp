@@ -15,6 +15,7 @@
 // apply (doc/Boolean_isosurfacing_3/tools.md).
 
 #include "cli.h"
+#include "huge_page_heap.h"
 #include "kernels.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
@@ -226,6 +227,7 @@ int run(Tool& tool, const Options& options)
 
 int main(int argc, char** argv)
 {
+  biso_tools::restart_with_huge_page_heap(argv);
   Tool tool("volume", description);
   Options options;
   CLI::App& app = tool.app();
