@@ -78,73 +78,66 @@ inline bool has_feature(const Vector_3d* normals, std::size_t n, const Feature_s
   return false;
 }
 
-/// The minimiser of the tangent-plane quadric of `n` points with unit
-/// normals, truncated to `rank` (2 or 3) around their mass point, and the
-/// direction of the crease line (the null direction for rank 2).  Returns
-/// false if the quadric has a smaller rank than requested.
-inline bool solve_feature_quadric(const Vector_3d* points, const Vector_3d* normals, std::size_t n, int rank,
-                                  const Feature_settings& settings, Vector_3d& result, Vector_3d& direction)
+/// The tangent-plane quadric of `n` points with unit normals, around their
+/// mass point, decomposed once (one 3x3 eigen-solve a feature cube, where
+/// its rank and then each truncation tried took one each: the solver was
+/// the largest single cost of the feature triangulation).
+class Feature_quadric
 {
-  Eigen::Vector3d mass = Eigen::Vector3d::Zero();
-  for(std::size_t i = 0; i < n; ++i)
-    mass += Eigen::Vector3d(points[i][0], points[i][1], points[i][2]);
-  mass /= double(n);
-  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  for(std::size_t i = 0; i < n; ++i)
+public:
+  Feature_quadric(const Vector_3d* points, const Vector_3d* normals, std::size_t n, const Feature_settings& settings)
   {
-    const Eigen::Vector3d normal(normals[i][0], normals[i][1], normals[i][2]);
-    const Eigen::Vector3d p(points[i][0], points[i][1], points[i][2]);
-    a += normal * normal.transpose();
-    b += normal * normal.dot(p - mass);
+    m_mass = Eigen::Vector3d::Zero();
+    for(std::size_t i = 0; i < n; ++i)
+      m_mass += Eigen::Vector3d(points[i][0], points[i][1], points[i][2]);
+    m_mass /= double(n);
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    m_b = Eigen::Vector3d::Zero();
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Eigen::Vector3d normal(normals[i][0], normals[i][1], normals[i][2]);
+      const Eigen::Vector3d p(points[i][0], points[i][1], points[i][2]);
+      a += normal * normal.transpose();
+      m_b += normal * normal.dot(p - m_mass);
+    }
+    // A = N^T N, so its eigenvalues are the squared singular values of N.
+    m_solver.compute(a);
+    const Eigen::Vector3d& lambda = m_solver.eigenvalues(); // increasing
+    if(m_solver.info() != Eigen::Success || !(lambda[2] > 0))
+      return;
+    const double threshold = settings.singular_value_threshold * settings.singular_value_threshold * lambda[2];
+    for(int i = 0; i < 3; ++i)
+      if(lambda[i] >= threshold)
+        ++m_rank;
   }
-  // A = N^T N, so its eigenvalues are the squared singular values of N.
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a);
-  if(solver.info() != Eigen::Success)
-    return false;
-  const Eigen::Vector3d lambda = solver.eigenvalues(); // increasing
-  const double largest = lambda[2];
-  if(!(largest > 0))
-    return false;
-  const double threshold = settings.singular_value_threshold * settings.singular_value_threshold * largest;
-  int available = 0;
-  for(int i = 0; i < 3; ++i)
-    if(lambda[i] >= threshold)
-      ++available;
-  if(available < rank)
-    return false;
-  Eigen::Vector3d x = mass;
-  for(int i = 3 - rank; i < 3; ++i)
-  {
-    const Eigen::Vector3d u = solver.eigenvectors().col(i);
-    x += (u.dot(b) / lambda[i]) * u;
-  }
-  result = {{x[0], x[1], x[2]}};
-  const Eigen::Vector3d d = solver.eigenvectors().col(0);
-  direction = {{d[0], d[1], d[2]}};
-  return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
-}
 
-/// The rank the quadric supports (0, 1, 2 or 3) after truncation.
-inline int feature_quadric_rank(const Vector_3d* normals, std::size_t n, const Feature_settings& settings)
-{
-  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-  for(std::size_t i = 0; i < n; ++i)
+  /// The rank the quadric supports (0, 1, 2 or 3) after truncation.
+  int rank() const { return m_rank; }
+
+  /// The minimiser truncated to `rank` (2 or 3, at most `rank()`), and the
+  /// direction of the crease line (the null direction for rank 2).  False
+  /// if the quadric has a smaller rank or the point is not finite.
+  bool minimiser(int rank, Vector_3d& result, Vector_3d& direction) const
   {
-    const Eigen::Vector3d normal(normals[i][0], normals[i][1], normals[i][2]);
-    a += normal * normal.transpose();
+    if(rank > m_rank)
+      return false;
+    Eigen::Vector3d x = m_mass;
+    for(int i = 3 - rank; i < 3; ++i)
+    {
+      const Eigen::Vector3d u = m_solver.eigenvectors().col(i);
+      x += (u.dot(m_b) / m_solver.eigenvalues()[i]) * u;
+    }
+    result = {{x[0], x[1], x[2]}};
+    const Eigen::Vector3d d = m_solver.eigenvectors().col(0);
+    direction = {{d[0], d[1], d[2]}};
+    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d lambda = solver.eigenvalues();
-  if(!(lambda[2] > 0))
-    return 0;
-  const double threshold = settings.singular_value_threshold * settings.singular_value_threshold * lambda[2];
-  int rank = 0;
-  for(int i = 0; i < 3; ++i)
-    if(lambda[i] >= threshold)
-      ++rank;
-  return rank;
-}
+
+private:
+  Eigen::Vector3d m_mass, m_b;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> m_solver;
+  int m_rank = 0;
+};
 
 // The parameter interval [t0, t1] of the line x + t d inside the box [low,
 // high] (empty iff t0 > t1).
@@ -191,12 +184,12 @@ Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, s
 {
   if(!settings.enabled || n < 3 || !has_feature(normals, n, settings))
     return Feature_kind::NONE;
-  const int rank = feature_quadric_rank(normals, n, settings);
+  const Feature_quadric quadric(points, normals, n, settings);
   const double tolerance = 1e-9 * (high[0] - low[0]);
-  for(int r = rank; r >= 2; --r)
+  for(int r = quadric.rank(); r >= 2; --r)
   {
     Vector_3d x, d;
-    if(!solve_feature_quadric(points, normals, n, r, settings, x, d))
+    if(!quadric.minimiser(r, x, d))
       continue;
     const auto clamped = [&](Vector_3d y) {
       for(int a = 0; a < 3; ++a)
