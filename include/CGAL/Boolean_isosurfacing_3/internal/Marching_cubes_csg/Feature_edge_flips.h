@@ -18,6 +18,7 @@
 // skipped.  A flip is also skipped when a new triangle would face against
 // the crossing normals at a or b (it would fold the surface).
 
+#include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_vertex.h>
 
 #include <algorithm>
@@ -25,7 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -50,36 +51,38 @@ void flip_feature_edges(const std::vector<Vector_3d>& points, const Normals& nor
                         std::vector<Triangle>& triangles, const std::vector<std::size_t>& fans,
                         std::vector<Flipped_edge>& flipped)
 {
-  typedef std::tuple<std::size_t, std::size_t, std::size_t> Keyed; // (low vertex, high vertex, triangle)
-  std::vector<Keyed> sides;
+  // Sorted as one 64-bit key of the two vertices and the triangle: the
+  // order of (low, high, triangle) triples in fewer bytes.
+  if(points.size() > (std::size_t(1) << 32))
+    throw Lattice_too_large_error("more than 2^32 vertices: too many for the feature flips");
+  const auto key = [](std::size_t a, std::size_t b) {
+    return (std::uint64_t((std::min)(a, b)) << 32) | std::uint64_t((std::max)(a, b));
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> sides; // (segment, triangle)
   sides.reserve(fans.size());
   for(std::size_t t : fans)
-  {
-    const std::size_t a = triangles[t][0], b = triangles[t][1];
-    sides.emplace_back((std::min)(a, b), (std::max)(a, b), t);
-  }
+    sides.emplace_back(key(triangles[t][0], triangles[t][1]), t);
   std::sort(sides.begin(), sides.end());
-  // Candidate flips: (low apex, high apex, triangle t1, triangle t2).
-  std::vector<std::array<std::size_t, 4>> candidates;
+  // Candidate flips: (apexes, triangle t1, triangle t2).
+  std::vector<std::array<std::uint64_t, 3>> candidates;
   for(std::size_t i = 0; i + 1 < sides.size(); ++i)
   {
-    if(std::get<0>(sides[i]) != std::get<0>(sides[i + 1]) || std::get<1>(sides[i]) != std::get<1>(sides[i + 1]))
+    if(sides[i].first != sides[i + 1].first)
       continue;
-    const std::size_t t1 = std::get<2>(sides[i]), t2 = std::get<2>(sides[i + 1]);
+    const std::size_t t1 = sides[i].second, t2 = sides[i + 1].second;
     const std::size_t f1 = triangles[t1][2], f2 = triangles[t2][2];
     if(f1 != f2)
-      candidates.push_back({{(std::min)(f1, f2), (std::max)(f1, f2), t1, t2}});
+      candidates.push_back({{key(f1, f2), t1, t2}});
     ++i;
   }
   std::sort(candidates.begin(), candidates.end());
   for(std::size_t i = 0; i < candidates.size(); ++i)
   {
-    const bool repeated = (i > 0 && candidates[i][0] == candidates[i - 1][0] && candidates[i][1] == candidates[i - 1][1]) ||
-                          (i + 1 < candidates.size() && candidates[i][0] == candidates[i + 1][0] &&
-                           candidates[i][1] == candidates[i + 1][1]);
+    const bool repeated = (i > 0 && candidates[i][0] == candidates[i - 1][0]) ||
+                          (i + 1 < candidates.size() && candidates[i][0] == candidates[i + 1][0]);
     if(repeated)
       continue;
-    const std::size_t t1 = candidates[i][2], t2 = candidates[i][3];
+    const std::size_t t1 = std::size_t(candidates[i][1]), t2 = std::size_t(candidates[i][2]);
     // t1 = (a, b, f1) and t2 = (b, a, f2).
     const std::size_t a = triangles[t1][0], b = triangles[t1][1], f1 = triangles[t1][2], f2 = triangles[t2][2];
     if(triangles[t2][0] != b || triangles[t2][1] != a)
