@@ -93,20 +93,22 @@ struct Sliver_flip_settings
 /// replaces needed about 48 bytes per edge (4.7 GB at 2048 cells).  The
 /// vertices' corner lists it is built from take about `max_star_corners`
 /// entries at a time (ranges of a power of two vertices), the ranges in
-/// parallel with `Parallel_tag`.  By default (0), 2^20 entries or 1/128 of
-/// the corners, whichever is more: an output under about 350K triangles is
-/// one range (each range reads the triangles of its window twice, and the
-/// feature vertices' window is all of them: armadillo united with a copy at
-/// 128 cells, 0.5 ms less than ranges of 2^16), and on large outputs the
-/// lists of the ranges in work add little to the table at the memory peak
-/// of the feature path (1/32 was 60 MB more at 2048 cells on two threads).
+/// parallel with `Parallel_tag`.  By default (0): up to 2^21 corners (about
+/// 700K triangles), one range (each range reads the triangles of its window
+/// twice, and the feature vertices' window is all of them: armadillo united
+/// with a copy at 128 cells, 0.5 ms less than ranges of 2^16 corners);
+/// above, 2^16 entries or 1/128 of the corners, whichever is more, so that
+/// the lists of the ranges in work add little to the table at the memory
+/// peak of the feature path (1/32 was 60 MB more at 2048 cells on two
+/// threads).
 template <typename ConcurrencyTag = Sequential_tag, typename Index, typename Triangle>
 bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>& triangles, std::vector<Index>& opposite,
                       std::size_t max_star_corners = 0)
 {
   const std::size_t corners = 3 * triangles.size();
   if(max_star_corners == 0)
-    max_star_corners = (std::max)(std::size_t(1) << 20, corners / 128);
+    max_star_corners = corners <= (std::size_t(1) << 21) ? 2 * corners // one range: 2^shift > points below
+                                                         : (std::max)(std::size_t(1) << 16, corners / 128);
   const Index none = Index(-1);
   const auto next = [](std::size_t c) { return c - c % 3 + (c + 1) % 3; };
   const auto previous = [](std::size_t c) { return c - c % 3 + (c + 2) % 3; };
