@@ -15,7 +15,7 @@
 // stderr (doc/Boolean_isosurfacing_3/tools.md).
 
 #include "cli.h"
-#include "huge_page_heap.h"
+#include "process_start.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/pts.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_point_samples.h>

@@ -18,7 +18,7 @@
 // stderr (doc/Boolean_isosurfacing_3/tools.md).
 
 #include "cli.h"
-#include "huge_page_heap.h"
+#include "process_start.h"
 #include "csg_options.h"
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
@@ -807,23 +807,20 @@ int run(Tool& tool, const Options& options)
 
 } // namespace
 
-#ifdef BISO_WITH_MPI
-int csg_distributed_main(int argc, char** argv); // csg_distributed.cpp
-#endif
-
 int main(int argc, char** argv)
 {
-  biso_tools::restart_with_huge_page_heap(argv);
+  // The MPI driver first: it is started with the huge-page heap directly.
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--distributed")
     {
 #ifdef BISO_WITH_MPI
-      return csg_distributed_main(argc, argv);
+      return biso_tools::run_distributed_driver("csg", "csg_distributed", argv);
 #else
       std::cerr << "csg: error: --distributed: this csg was built without MPI\n";
       return 1;
 #endif
     }
+  biso_tools::restart_with_huge_page_heap(argv);
   Tool tool("csg", description);
   Options options;
   Option_text text;

@@ -18,6 +18,7 @@
 #include "csg_options.h"
 #include "kernels.h"
 #include "mpi_driver.h"
+#include "process_start.h"
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
@@ -27,7 +28,6 @@
 #include <string>
 #include <vector>
 
-int csg_distributed_main(int argc, char** argv);
 
 namespace {
 
@@ -177,9 +177,10 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
 
 } // namespace
 
-// Called by csg's main() when --distributed is on the command line.
-int csg_distributed_main(int argc, char** argv)
+// Run by `csg --distributed` (process_start.h), or directly.
+int main(int argc, char** argv)
 {
+  biso_tools::restart_with_huge_page_heap(argv);
   return biso_tools::mpi::distributed_main<Options, csg_tool::Option_text>(
       "csg", csg_tool::description, argc, argv, csg_tool::add_options, check_distributed_options, run);
 }

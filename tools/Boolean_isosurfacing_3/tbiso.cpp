@@ -19,7 +19,7 @@
 // (tbiso_output.h) and the summary (tbiso_summary.h).
 
 #include "cli.h"
-#include "huge_page_heap.h"
+#include "process_start.h"
 #include "tbiso_extract.h"
 #include "tbiso_input.h"
 #include "tbiso_options.h"
@@ -241,23 +241,20 @@ int run_demo(Tool& tool, Options o)
 } // namespace
 } // namespace tbiso_tool
 
-#ifdef BISO_WITH_MPI
-int tbiso_distributed_main(int argc, char** argv); // tbiso_distributed.cpp
-#endif
-
 int main(int argc, char** argv)
 {
-  biso_tools::restart_with_huge_page_heap(argv);
+  // The MPI driver first: it is started with the huge-page heap directly.
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--distributed")
     {
 #ifdef BISO_WITH_MPI
-      return tbiso_distributed_main(argc, argv);
+      return biso_tools::run_distributed_driver("tbiso", "tbiso_distributed", argv);
 #else
       std::cerr << "tbiso: error: --distributed: this tbiso was built without MPI\n";
       return 1;
 #endif
     }
+  biso_tools::restart_with_huge_page_heap(argv);
   using namespace tbiso_tool;
   Tool tool("tbiso", description);
   Options options;

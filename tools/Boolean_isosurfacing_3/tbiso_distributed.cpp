@@ -17,6 +17,7 @@
 #include <CGAL/Boolean_isosurfacing_3/MPI/distributed_boolean_isosurface.h>
 
 #include "mpi_driver.h"
+#include "process_start.h"
 #include "tbiso_fields.h"
 #include "tbiso_options.h"
 
@@ -29,7 +30,6 @@
 #include <string>
 #include <vector>
 
-int tbiso_distributed_main(int argc, char** argv);
 
 namespace {
 
@@ -175,9 +175,10 @@ int run(biso_tools::Tool& tool, const Options& o, const Ranks& ranks)
 
 } // namespace
 
-// Called by tbiso's main() when --distributed is on the command line.
-int tbiso_distributed_main(int argc, char** argv)
+// Run by `tbiso --distributed` (process_start.h), or directly.
+int main(int argc, char** argv)
 {
+  biso_tools::restart_with_huge_page_heap(argv);
   return biso_tools::mpi::distributed_main<Options, tbiso_tool::Option_text>(
       "tbiso", tbiso_tool::description, argc, argv, tbiso_tool::add_options, check_distributed_options, run);
 }

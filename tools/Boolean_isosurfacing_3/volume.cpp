@@ -15,7 +15,7 @@
 // apply (doc/Boolean_isosurfacing_3/tools.md).
 
 #include "cli.h"
-#include "huge_page_heap.h"
+#include "process_start.h"
 #include "kernels.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
