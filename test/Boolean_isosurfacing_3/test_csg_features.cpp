@@ -288,6 +288,37 @@ Csg_run measure_creases(const std::vector<Mesh>& meshes, const std::string& expr
 
 // ------------------------------------------------------------------ exact answers
 
+// The quadric of tangent planes, decomposed once: three planes through a
+// point give rank 3 and that point; two give rank 2, a point of their line
+// and the line's direction; the rank-2 truncation of a corner is refused
+// only above its rank.
+TEST(CsgFeatures, FeatureQuadricRankAndMinimiser)
+{
+  const MC::Vector_3d corner{{1, 2, 3}};
+  const MC::Vector_3d normals[4] = {{{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}, {{1, 0, 0}}};
+  // Points on the planes x = 1, y = 2, z = 3, away from the corner.
+  const MC::Vector_3d points[4] = {{{1, 2.5, 3.25}}, {{1.5, 2, 2.75}}, {{0.75, 2.25, 3}}, {{1, 1.5, 3.5}}};
+  MC::Feature_settings settings;
+  MC::Vector_3d x, d;
+
+  const MC::Feature_quadric three(points, normals, 4, settings);
+  EXPECT_EQ(three.rank(), 3);
+  ASSERT_TRUE(three.minimiser(3, x, d));
+  for(int a = 0; a < 3; ++a)
+    EXPECT_NEAR(x[a], corner[a], 1e-12);
+
+  // The planes x = 1 and y = 2 (the first, second and fourth samples).
+  const MC::Vector_3d crease_points[3] = {points[0], points[1], points[3]};
+  const MC::Vector_3d crease_normals[3] = {normals[0], normals[1], normals[3]};
+  const MC::Feature_quadric two(crease_points, crease_normals, 3, settings);
+  EXPECT_EQ(two.rank(), 2);
+  EXPECT_FALSE(two.minimiser(3, x, d));
+  ASSERT_TRUE(two.minimiser(2, x, d));
+  EXPECT_NEAR(x[0], 1, 1e-12);
+  EXPECT_NEAR(x[1], 2, 1e-12);
+  EXPECT_NEAR(std::abs(d[2]), 1, 1e-12);
+}
+
 TEST(CsgFeatures, BoxMinusMovedBoxHasExactCornersAndCreases)
 {
   const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
