@@ -901,6 +901,61 @@ TEST(CsgFeaturesTable, CollapseBatchesCollapseWhatOneBatchDoes)
   EXPECT_GE(batched_passes, 3u); // passes that really had several batches
 }
 
+// Small outputs take the collapse passes on rows made once and merged by
+// the collapses; large ones on rows made again for each pass (bounded
+// memory).  Both must make the same collapses: the same triangles in the
+// same order and the same removed points, with batches too (where a
+// batch's rows do not yet see its own collapses), and with feature vertices
+// (which never move).
+TEST(CsgFeaturesTable, MergedRowsCollapseWhatRowsByPassDo)
+{
+  std::vector<Csg_run> runs = plain_runs_for_sliver_passes();
+  const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
+  const Mesh b = rotated(make_box(Point(0.3, 0.3, 0.3), Point(1.4, 1.3, 1.2)), Point(0.5, 0.5, 0.5), Vector(0, 1, 1), 0.3);
+  runs.push_back(run_csg({a, b}, "A & !B", 40, true, 0)); // features, no collapse yet
+  std::size_t total = 0;
+  for(const Csg_run& run : runs)
+  {
+    const std::vector<MC::Vector_3d> points = points_of(run);
+    const std::size_t edge_points = points.size() - run.statistics.feature_vertices;
+    for(const double cells : {0.15, 0.35})
+    {
+      const double length = cells * run.spacing;
+      std::vector<Tri> by_pass = run.triangles, merged = run.triangles;
+      std::vector<unsigned char> removed_by_pass(points.size(), 0), removed_merged = removed_by_pass;
+      const std::size_t n = MC::collapse_short_edge_passes(points, by_pass, edge_points, length, removed_by_pass,
+                                                           MC::Collapse_rows::BY_PASS);
+      EXPECT_EQ(MC::collapse_short_edge_passes(points, merged, edge_points, length, removed_merged,
+                                               MC::Collapse_rows::MERGED),
+                n);
+      EXPECT_EQ(merged, by_pass) << cells << " cells";
+      EXPECT_EQ(removed_merged, removed_by_pass);
+      total += n;
+      // Batches of 500 candidates.
+      std::vector<Tri> batched = run.triangles, merged_batched = run.triangles;
+      MC::Collapse_marks marks;
+      marks.removed.assign(points.size(), 0);
+      std::size_t m = 0;
+      for(int pass = 0; pass < MC::max_collapse_passes; ++pass)
+      {
+        const std::size_t c = MC::collapse_short_edges_once(points, batched, edge_points, length, marks, 500);
+        m += c;
+        if(c == 0)
+          break;
+      }
+      std::vector<unsigned char> removed_merged_batched(points.size(), 0);
+      EXPECT_EQ(MC::collapse_short_edges_with_merged_rows(points, merged_batched, edge_points, length,
+                                                          removed_merged_batched, 500),
+                m);
+      EXPECT_EQ(merged_batched, batched) << cells << " cells, batches of 500";
+      EXPECT_EQ(removed_merged_batched, marks.removed);
+      for(std::size_t v = edge_points; v < points.size(); ++v)
+        ASSERT_EQ(removed_merged[v], 0) << "a feature vertex moved";
+    }
+  }
+  EXPECT_GT(total, 1000u);
+}
+
 // The Lawson flips alone, on plain Marching Cubes output (no collapse, no
 // flip done yet) of a box minus a box: only coplanar quadrilaterals may flip
 // (max_deviation 1e-12 r), so the volume must not change, while the smallest

@@ -78,6 +78,150 @@ double most_opposite_neighbours(const std::vector<Vector_3d>& points, const std:
   return smallest;
 }
 
+/// Scratch space of `collapse_if_valid()`, kept from one call to the next.
+template <typename Triangle>
+struct Collapse_scratch
+{
+  std::vector<std::size_t> neighbours_gone, neighbours_keep, common;
+  std::vector<Triangle> star_after;
+  std::vector<unsigned char> moved_flags;
+};
+
+/// Collapses the edge (keep, gone) into `keep` if it passes the tests of
+/// `collapse_short_edges_once()` (the caller has checked that neither end
+/// is in a collapse of this pass already).  `star(v, f)` calls `f(t)` on the
+/// triangles `t` of vertex v's row, deleted ones included, until `f` returns
+/// false (and then returns false).  A row holds the triangles of v when the
+/// rows were made (the pass or its batch began): for an end of an earlier
+/// collapse of the same batch, no longer all of them.  `moved(w)` is called
+/// on each vertex of each triangle that moves.
+template <typename Triangle, typename Star, typename Moved>
+bool collapse_if_valid(std::size_t keep, std::size_t gone, const std::vector<Vector_3d>& points,
+                       std::vector<Triangle>& triangles, std::vector<unsigned char>& deleted, const Star& star,
+                       const Moved& moved, Collapse_scratch<Triangle>& scratch)
+{
+  typedef typename Triangle::value_type Index;
+  // The two triangles of the edge, and the link condition.
+  std::array<std::size_t, 2> edge_triangles{{0, 0}}, opposite{{0, 0}};
+  int found = 0;
+  star(gone, [&](std::size_t t) {
+    if(deleted[t])
+      return true;
+    const auto& tr = triangles[t];
+    if(tr[0] == keep || tr[1] == keep || tr[2] == keep)
+    {
+      if(found == 2)
+      {
+        found = 3;
+        return false;
+      }
+      edge_triangles[found] = t;
+      opposite[found] = tr[0] != keep && tr[0] != gone ? tr[0] : (tr[1] != keep && tr[1] != gone ? tr[1] : tr[2]);
+      ++found;
+    }
+    return true;
+  });
+  if(found != 2 || opposite[0] == opposite[1])
+    return false;
+  const auto neighbours = [&](std::size_t v, std::vector<std::size_t>& out) {
+    out.clear();
+    star(v, [&](std::size_t t) {
+      if(!deleted[t])
+        for(const std::size_t w : triangles[t])
+          if(w != v)
+            out.push_back(w);
+      return true;
+    });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  };
+  neighbours(gone, scratch.neighbours_gone);
+  neighbours(keep, scratch.neighbours_keep);
+  scratch.common.clear();
+  std::set_intersection(scratch.neighbours_gone.begin(), scratch.neighbours_gone.end(),
+                        scratch.neighbours_keep.begin(), scratch.neighbours_keep.end(),
+                        std::back_inserter(scratch.common));
+  if(scratch.common.size() != 2)
+    return false;
+  // The link condition on edges too: if both ends form a triangle with the
+  // two opposite vertices, the four are a tetrahedron (a tiny component of
+  // its own) and the collapse would leave two coincident triangles.
+  const auto has_triangle_with_opposites = [&](std::size_t v) {
+    return !star(v, [&](std::size_t t) {
+      const auto& tr = triangles[t];
+      return deleted[t] || std::count(tr.begin(), tr.end(), opposite[0]) != 1 ||
+             std::count(tr.begin(), tr.end(), opposite[1]) != 1;
+    });
+  };
+  if(has_triangle_with_opposites(gone) && has_triangle_with_opposites(keep))
+    return false;
+  // The triangles of `gone` move.  Each must keep its orientation and not
+  // become a worse sliver than it was (below a quality of 1e-4, about 0.25
+  // degree).  And no fold: a moved triangle and a triangle across one of
+  // its edges must not face (nearly) opposite ways.  Squashing a tiny
+  // component (an octahedron around one lattice point) flat, or turning a
+  // triangle onto its outer neighbour in a lattice plane, passes every
+  // per-triangle test but makes the surface overlap itself.
+  std::vector<Triangle>& star_after = scratch.star_after;
+  std::vector<unsigned char>& moved_flags = scratch.moved_flags;
+  star_after.clear();
+  moved_flags.clear();
+  star(keep, [&](std::size_t t) {
+    if(!deleted[t] && t != edge_triangles[0] && t != edge_triangles[1])
+    {
+      star_after.push_back(triangles[t]);
+      moved_flags.push_back(0);
+    }
+    return true;
+  });
+  const bool ok = star(gone, [&](std::size_t t) {
+    if(deleted[t] || t == edge_triangles[0] || t == edge_triangles[1])
+      return true;
+    const Triangle& before = triangles[t];
+    Triangle after = before;
+    std::array<std::size_t, 2> outer{{0, 0}};
+    int o = 0;
+    for(Index& w : after)
+      if(w == gone)
+        w = Index(keep);
+      else if(o < 2)
+        outer[o++] = w;
+    const Vector_3d &b0 = points[before[0]], &b1 = points[before[1]], &b2 = points[before[2]];
+    const Vector_3d &a0 = points[after[0]], &a1 = points[after[1]], &a2 = points[after[2]];
+    const double q1 = triangle_quality(a0, a1, a2);
+    if(!(dot3(triangle_normal(b0, b1, b2), triangle_normal(a0, a1, a2)) > 0 &&
+         (q1 > 1e-4 || q1 >= triangle_quality(b0, b1, b2)) && q1 > degenerate_quality))
+      return false;
+    star_after.push_back(after);
+    moved_flags.push_back(1);
+    // The triangle across the outer edge (it has a row: a neighbour of gone).
+    star(outer[0], [&](std::size_t n) {
+      const auto& tn = triangles[n];
+      if(n != t && !deleted[n] && std::count(tn.begin(), tn.end(), outer[1]) == 1)
+      {
+        star_after.push_back(tn);
+        moved_flags.push_back(0);
+      }
+      return true;
+    });
+    return true;
+  });
+  if(!ok || most_opposite_neighbours(points, star_after, moved_flags) < max_fold_cosine)
+    return false;
+  star(gone, [&](std::size_t t) {
+    if(!deleted[t])
+      for(Index& w : triangles[t])
+      {
+        if(w == gone)
+          w = Index(keep);
+        moved(w);
+      }
+    return true;
+  });
+  deleted[edge_triangles[0]] = deleted[edge_triangles[1]] = 1;
+  return true;
+}
+
 /// A pass of `collapse_short_edges()` with more candidate edges takes them
 /// in batches of about this many (bounding the memory of its tables).
 constexpr std::size_t candidates_per_batch = std::size_t(1) << 18;
@@ -207,135 +351,21 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
       for(std::size_t v : ends)
         row_of[v] = no_row;
   };
-  std::vector<std::size_t> neighbours_u, neighbours_v, common;
-  std::vector<Triangle> star_after;
-  std::vector<unsigned char> moved_flags;
-  const auto neighbours = [&](std::size_t r, std::size_t v, std::vector<std::size_t>& out) {
-    out.clear();
-    for(std::size_t e = first[r]; e < first[r + 1]; ++e)
-      if(!deleted[incident[e]])
-        for(std::size_t w : triangles[incident[e]])
-          if(w != v)
-            out.push_back(w);
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
+  const auto star = [&](std::size_t v, auto&& f) {
+    const std::size_t r = row(v);
+    for(std::size_t x = first[r]; x < first[r + 1]; ++x)
+      if(!f(std::size_t(incident[x])))
+        return false;
+    return true;
   };
   std::vector<unsigned char> moved_vertex(nv, 0); // a vertex of a moved triangle
+  Collapse_scratch<Triangle> scratch;
   std::size_t collapses = 0;
-  // Collapses gone into keep if every test passes.
   const auto try_collapse = [&](std::size_t keep, std::size_t gone) {
-    if(in_collapse[keep] || in_collapse[gone])
+    if(in_collapse[keep] || in_collapse[gone] ||
+       !collapse_if_valid(keep, gone, points, triangles, deleted, star,
+                          [&](std::size_t w) { moved_vertex[w] = 1; }, scratch))
       return false;
-    const std::size_t row_keep = row(keep), row_gone = row(gone);
-    // The two triangles of the edge, and the link condition.
-    std::array<std::size_t, 2> edge_triangles{{0, 0}}, opposite{{0, 0}};
-    int found = 0;
-    for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
-    {
-      const std::size_t t = incident[x];
-      if(deleted[t])
-        continue;
-      const auto& tr = triangles[t];
-      if(tr[0] == keep || tr[1] == keep || tr[2] == keep)
-      {
-        if(found == 2)
-        {
-          found = 3;
-          break;
-        }
-        edge_triangles[found] = t;
-        opposite[found] = tr[0] != keep && tr[0] != gone ? tr[0] : (tr[1] != keep && tr[1] != gone ? tr[1] : tr[2]);
-        ++found;
-      }
-    }
-    if(found != 2 || opposite[0] == opposite[1])
-      return false;
-    neighbours(row_gone, gone, neighbours_u);
-    neighbours(row_keep, keep, neighbours_v);
-    common.clear();
-    std::set_intersection(neighbours_u.begin(), neighbours_u.end(), neighbours_v.begin(), neighbours_v.end(),
-                          std::back_inserter(common));
-    if(common.size() != 2)
-      return false;
-    // The link condition on edges too: if both ends form a triangle with the
-    // two opposite vertices, the four are a tetrahedron (a tiny component of
-    // its own) and the collapse would leave two coincident triangles.
-    const auto has_triangle_with_opposites = [&](std::size_t r) {
-      for(std::size_t x = first[r]; x < first[r + 1]; ++x)
-      {
-        const auto& tr = triangles[incident[x]];
-        if(!deleted[incident[x]] && std::count(tr.begin(), tr.end(), opposite[0]) == 1 &&
-           std::count(tr.begin(), tr.end(), opposite[1]) == 1)
-          return true;
-      }
-      return false;
-    };
-    if(has_triangle_with_opposites(row_gone) && has_triangle_with_opposites(row_keep))
-      return false;
-    // The triangles of `gone` move.  Each must keep its orientation and not
-    // become a worse sliver than it was (below a quality of 1e-4, about 0.25
-    // degree).  And no fold: a moved triangle and a triangle across one of
-    // its edges must not face (nearly) opposite ways.  Squashing a tiny
-    // component (an octahedron around one lattice point) flat, or turning a
-    // triangle onto its outer neighbour in a lattice plane, passes every
-    // per-triangle test but makes the surface overlap itself.
-    star_after.clear();
-    moved_flags.clear();
-    for(std::size_t x = first[row_keep]; x < first[row_keep + 1]; ++x)
-    {
-      const std::size_t t = incident[x];
-      if(!deleted[t] && t != edge_triangles[0] && t != edge_triangles[1])
-      {
-        star_after.push_back(triangles[t]);
-        moved_flags.push_back(0);
-      }
-    }
-    bool ok = true;
-    for(std::size_t x = first[row_gone]; x < first[row_gone + 1] && ok; ++x)
-    {
-      const std::size_t t = incident[x];
-      if(deleted[t] || t == edge_triangles[0] || t == edge_triangles[1])
-        continue;
-      const Triangle& before = triangles[t];
-      Triangle moved = before;
-      std::array<std::size_t, 2> outer{{0, 0}};
-      int o = 0;
-      for(Index& w : moved)
-        if(w == gone)
-          w = Index(keep);
-        else if(o < 2)
-          outer[o++] = w;
-      const Vector_3d &b0 = points[before[0]], &b1 = points[before[1]], &b2 = points[before[2]];
-      const Vector_3d &a0 = points[moved[0]], &a1 = points[moved[1]], &a2 = points[moved[2]];
-      const double q1 = triangle_quality(a0, a1, a2);
-      ok = dot3(triangle_normal(b0, b1, b2), triangle_normal(a0, a1, a2)) > 0 &&
-           (q1 > 1e-4 || q1 >= triangle_quality(b0, b1, b2)) && q1 > degenerate_quality;
-      star_after.push_back(moved);
-      moved_flags.push_back(1);
-      // The triangle across the outer edge (it has a row: a neighbour of gone).
-      const std::size_t r = row(outer[0]);
-      for(std::size_t y = first[r]; y < first[r + 1]; ++y)
-      {
-        const std::size_t n = incident[y];
-        const auto& tn = triangles[n];
-        if(n != t && !deleted[n] && std::count(tn.begin(), tn.end(), outer[1]) == 1)
-        {
-          star_after.push_back(tn);
-          moved_flags.push_back(0);
-        }
-      }
-    }
-    if(!ok || most_opposite_neighbours(points, star_after, moved_flags) < max_fold_cosine)
-      return false;
-    for(std::size_t x = first[row_gone]; x < first[row_gone + 1]; ++x)
-      if(!deleted[incident[x]])
-        for(Index& w : triangles[incident[x]])
-        {
-          if(w == gone)
-            w = Index(keep);
-          moved_vertex[w] = 1;
-        }
-    deleted[edge_triangles[0]] = deleted[edge_triangles[1]] = 1;
     in_collapse[gone] = in_collapse[keep] = 1; // in no other collapse of this pass
     marks.removed[gone] = 1;
     ++collapses;
@@ -380,6 +410,224 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
   return collapses;
 }
 
+/// How `collapse_short_edge_passes()` finds the triangles of a vertex.
+enum class Collapse_rows
+{
+  /// Merged rows for outputs of at most `max_merged_rows_corners` corners,
+  /// rows by pass above.
+  AUTOMATIC,
+  /// Rows of the candidates' ends and their neighbours, made again for each
+  /// pass (or batch) from all the triangles: its memory is bounded by the
+  /// batch size (`collapse_short_edges_once()`).
+  BY_PASS,
+  /// The rows of every vertex, made once: a collapse adds the row of the
+  /// vertex that goes to the one that stays (a list of merged vertices), and
+  /// the deleted triangles stay in place, flagged, until the end.  4 bytes a
+  /// corner and 18 a vertex.
+  MERGED
+};
+
+/// Outputs of up to this many corners (about 2.8M triangles: 60 MB of merged
+/// rows) take `Collapse_rows::MERGED`.  Above, the memory of the feature path
+/// matters more (the 2048-cell lattice's peak is its corner table), and the
+/// passes take the rows by pass.
+constexpr std::size_t max_merged_rows_corners = std::size_t(1) << 23;
+
+/// The rows of every vertex's triangles, made once, and the vertices
+/// merged into each vertex by the collapses: the triangles a vertex has now
+/// are those of its row and of the rows of the vertices merged into it, the
+/// deleted ones apart.
+template <typename Index>
+class Merged_rows
+{
+public:
+  template <typename Triangle>
+  Merged_rows(std::size_t number_of_points, const std::vector<Triangle>& triangles)
+      : m_first(number_of_points + 1, 0), m_incident(3 * triangles.size()), m_merged_first(number_of_points, none),
+        m_merged_next(number_of_points, none), m_merge_batch(number_of_points, 0)
+  {
+    for(const Triangle& t : triangles)
+      for(const std::size_t v : t)
+        ++m_first[v + 1];
+    for(std::size_t v = 0; v < number_of_points; ++v)
+      m_first[v + 1] += m_first[v];
+    // Filled backwards from each row's end (as the rows by pass): `m_first`
+    // is the cursor and, once shifted by one, the rows' beginnings.
+    for(std::size_t t = triangles.size(); t-- > 0;)
+      for(const std::size_t v : triangles[t])
+        m_incident[--m_first[v + 1]] = std::uint32_t(t);
+    std::copy(m_first.begin() + 1, m_first.end(), m_first.begin());
+    m_first.back() = std::uint32_t(m_incident.size());
+  }
+
+  /// Calls `f(t)` on the triangles of v's row and of the rows of the
+  /// vertices merged into v in batches before `batch`, until `f` returns
+  /// false (then returns false).  (A vertex merged into v in the current
+  /// batch is left out: the rows by pass do not see it either.)
+  template <typename F>
+  bool for_each(std::size_t v, std::uint32_t batch, const F& f) const
+  {
+    for(std::size_t x = m_first[v]; x < m_first[v + 1]; ++x)
+      if(!f(std::size_t(m_incident[x])))
+        return false;
+    for(Index c = m_merged_first[v]; c != none; c = m_merged_next[c])
+      // What was merged into c was merged before c was.
+      if(m_merge_batch[c] < batch && !for_each(c, batch, f))
+        return false;
+    return true;
+  }
+
+  void merge(std::size_t gone, std::size_t keep, std::uint32_t batch)
+  {
+    m_merged_next[gone] = m_merged_first[keep];
+    m_merged_first[keep] = Index(gone);
+    m_merge_batch[gone] = batch;
+  }
+
+private:
+  static constexpr Index none = Index(-1);
+  std::vector<std::uint32_t> m_first, m_incident;
+  std::vector<Index> m_merged_first, m_merged_next; // lists of the merged vertices
+  std::vector<std::uint32_t> m_merge_batch;
+};
+
+/// The passes of `collapse_short_edges()` on merged rows: the same
+/// candidates, batches and tests as `collapse_short_edges_once()` repeated
+/// (so the same collapses), but the rows are made once instead of by three
+/// scans of the triangles each pass, and the deleted triangles are removed
+/// once, at the end.  Merged points are flagged in `removed`.
+template <typename Triangle>
+std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& points,
+                                                  std::vector<Triangle>& triangles, std::size_t first_feature_vertex,
+                                                  double max_length, std::vector<unsigned char>& removed,
+                                                  std::size_t batch_size = candidates_per_batch)
+{
+  typedef typename Triangle::value_type Index;
+  typedef std::array<Index, 2> Edge;
+  if(3 * triangles.size() >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+    return 0;
+  const std::size_t nv = points.size();
+  const double max_squared = max_length * max_length;
+  const auto is_candidate = [&](std::size_t a, std::size_t b) {
+    if(!(a < b && b < first_feature_vertex))
+      return false;
+    const Vector_3d d = sub3(points[a], points[b]);
+    return dot3(d, d) < max_squared;
+  };
+  std::vector<Edge> candidates;
+  for(const Triangle& t : triangles)
+    for(int i = 0; i < 3; ++i)
+      if(is_candidate(t[i], t[i == 2 ? 0 : i + 1]))
+        candidates.push_back({{t[i], t[i == 2 ? 0 : i + 1]}});
+  if(candidates.empty())
+    return 0;
+
+  Merged_rows<Index> rows(nv, triangles);
+  // moved: 1 for a vertex of a moved triangle, 2 for a vertex of a triangle
+  // with one (an end of the next pass's candidates).
+  std::vector<unsigned char> deleted(triangles.size(), 0), in_collapse(nv, 0), moved(nv, 0);
+  std::vector<Index> collapsed;
+  std::uint32_t batch = 0;
+  Collapse_scratch<Triangle> scratch;
+  std::size_t total = 0;
+  for(int pass = 0; pass < max_collapse_passes && !candidates.empty(); ++pass)
+  {
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    std::size_t collapses = 0;
+    const std::size_t per_batch = (std::max)(batch_size, std::size_t(1));
+    const std::size_t batches = (candidates.size() + per_batch - 1) / per_batch;
+    for(std::size_t b = 0; b < batches; ++b)
+    {
+      ++batch;
+      const auto star = [&](std::size_t v, auto&& f) { return rows.for_each(v, batch, f); };
+      const auto try_collapse = [&](std::size_t keep, std::size_t gone) {
+        if(in_collapse[keep] || in_collapse[gone] ||
+           !collapse_if_valid(keep, gone, points, triangles, deleted, star,
+                              [&](std::size_t w) { moved[w] = 1; },
+                              scratch))
+          return false;
+        in_collapse[gone] = in_collapse[keep] = 1; // in no other collapse of this pass
+        collapsed.push_back(Index(gone));
+        collapsed.push_back(Index(keep));
+        rows.merge(gone, keep, batch);
+        removed[gone] = 1;
+        ++collapses;
+        return true;
+      };
+      for(std::size_t e = candidates.size() * b / batches; e < candidates.size() * (b + 1) / batches; ++e)
+        if(!try_collapse(candidates[e][0], candidates[e][1]))
+          try_collapse(candidates[e][1], candidates[e][0]);
+    }
+    for(const Index v : collapsed)
+      in_collapse[v] = 0;
+    collapsed.clear();
+    total += collapses;
+    candidates.clear();
+    if(collapses == 0 || pass + 1 == max_collapse_passes)
+      break;
+    // The next pass's candidates (as `Collapse_marks::near_collapse`): the
+    // edges with an end on a triangle with a moved vertex.  Two scans of the
+    // triangles: the second ring of thousands of collapses is most of the
+    // vertices, and its stars were slower to walk (armadillo united with a
+    // copy at 128 cells, 7 against 1.5 ms).
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      const Triangle& tr = triangles[t];
+      if(!deleted[t] && (moved[tr[0]] & 1 || moved[tr[1]] & 1 || moved[tr[2]] & 1))
+        for(const std::size_t v : tr)
+          moved[v] |= 2;
+    }
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      const Triangle& tr = triangles[t];
+      if(!deleted[t] && (moved[tr[0]] & 2 || moved[tr[1]] & 2 || moved[tr[2]] & 2))
+        for(int i = 0; i < 3; ++i)
+        {
+          const std::size_t a = tr[i], b = tr[i == 2 ? 0 : i + 1];
+          if((moved[a] & 2 || moved[b] & 2) && is_candidate(a, b))
+            candidates.push_back({{Index(a), Index(b)}});
+        }
+    }
+    std::fill(moved.begin(), moved.end(), 0);
+  }
+  if(total > 0)
+  {
+    std::size_t out = 0;
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      if(!deleted[t])
+        triangles[out++] = triangles[t];
+    triangles.resize(out);
+  }
+  return total;
+}
+
+/// The collapse passes of `collapse_short_edges()`, without its
+/// renumbering: merged points are flagged in `removed` (one per point) and
+/// the deleted triangles removed.  Returns the number of collapses.
+template <typename Triangle>
+std::size_t collapse_short_edge_passes(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
+                                       std::size_t first_feature_vertex, double max_length,
+                                       std::vector<unsigned char>& removed,
+                                       Collapse_rows method = Collapse_rows::AUTOMATIC)
+{
+  if(method == Collapse_rows::MERGED ||
+     (method == Collapse_rows::AUTOMATIC && 3 * triangles.size() <= max_merged_rows_corners))
+    return collapse_short_edges_with_merged_rows(points, triangles, first_feature_vertex, max_length, removed);
+  Collapse_marks marks;
+  marks.removed.swap(removed);
+  std::size_t total = 0;
+  for(int pass = 0; pass < max_collapse_passes; ++pass)
+  {
+    const std::size_t collapses = collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, marks);
+    total += collapses;
+    if(collapses == 0)
+      break;
+  }
+  marks.removed.swap(removed);
+  return total;
+}
+
 /// Collapses the edges between two edge points (indices below
 /// `first_feature_vertex`) shorter than `max_length`, then removes the merged
 /// points and the deleted triangles, renumbering the points in order (and
@@ -399,16 +647,8 @@ std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Tri
                                         std::vector<std::uint8_t>* labels = nullptr)
 {
   typedef typename Triangle::value_type Index;
-  Collapse_marks marks;
-  marks.removed.assign(points.size(), 0);
-  std::size_t total = 0;
-  for(int pass = 0; pass < max_collapse_passes; ++pass)
-  {
-    const std::size_t collapses = collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, marks);
-    total += collapses;
-    if(collapses == 0)
-      break;
-  }
+  std::vector<unsigned char> removed(points.size(), 0);
+  const std::size_t total = collapse_short_edge_passes(points, triangles, first_feature_vertex, max_length, removed);
   if(total > 0)
   {
     // Renumber: the removed points go, the others keep their order (the
@@ -418,7 +658,7 @@ std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Tri
     for(std::size_t v = 0; v < points.size(); ++v)
     {
       new_index[v] = Index(next);
-      if(!marks.removed[v])
+      if(!removed[v])
       {
         if(labels != nullptr)
           (*labels)[next] = (*labels)[v];
@@ -438,8 +678,7 @@ std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Tri
   }
   // The flips' corner table is the memory peak of the feature path: what the
   // collapses freed goes back first.
-  std::vector<unsigned char>().swap(marks.removed);
-  std::vector<unsigned char>().swap(marks.near_collapse);
+  std::vector<unsigned char>().swap(removed);
   release_unused_capacity(points);
   release_unused_capacity(triangles);
   if(labels != nullptr)
