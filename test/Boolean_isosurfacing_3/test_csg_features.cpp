@@ -933,22 +933,14 @@ TEST(CsgFeaturesTable, MergedRowsCollapseWhatRowsByPassDo)
       total += n;
       // Batches of 500 candidates.
       std::vector<Tri> batched = run.triangles, merged_batched = run.triangles;
-      MC::Collapse_marks marks;
-      marks.removed.assign(points.size(), 0);
-      std::size_t m = 0;
-      for(int pass = 0; pass < MC::max_collapse_passes; ++pass)
-      {
-        const std::size_t c = MC::collapse_short_edges_once(points, batched, edge_points, length, marks, 500);
-        m += c;
-        if(c == 0)
-          break;
-      }
-      std::vector<unsigned char> removed_merged_batched(points.size(), 0);
-      EXPECT_EQ(MC::collapse_short_edges_with_merged_rows(points, merged_batched, edge_points, length,
-                                                          removed_merged_batched, 500),
+      std::vector<unsigned char> removed_batched(points.size(), 0), removed_merged_batched = removed_batched;
+      const std::size_t m = MC::collapse_short_edge_passes(points, batched, edge_points, length, removed_batched,
+                                                           MC::Collapse_rows::BY_PASS, 500);
+      EXPECT_EQ(MC::collapse_short_edge_passes(points, merged_batched, edge_points, length, removed_merged_batched,
+                                               MC::Collapse_rows::MERGED, 500),
                 m);
       EXPECT_EQ(merged_batched, batched) << cells << " cells, batches of 500";
-      EXPECT_EQ(removed_merged_batched, marks.removed);
+      EXPECT_EQ(removed_merged_batched, removed_batched);
       for(std::size_t v = edge_points; v < points.size(); ++v)
         ASSERT_EQ(removed_merged[v], 0) << "a feature vertex moved";
     }

@@ -182,10 +182,10 @@ bool collapse_if_valid(std::size_t keep, std::size_t gone, const std::vector<Vec
   if(has_triangle_with_opposites(gone) && has_triangle_with_opposites(keep))
     return false;
   // No fold: a moved triangle and a triangle across one of its edges must
-  // not face (nearly) opposite ways.  Squashing a tiny
-  // component (an octahedron around one lattice point) flat, or turning a
-  // triangle onto its outer neighbour in a lattice plane, passes every
-  // per-triangle test but makes the surface overlap itself.
+  // not face (nearly) opposite ways.  Squashing a tiny component (an
+  // octahedron around one lattice point) flat, or turning a triangle onto
+  // its outer neighbour in a lattice plane, passes every per-triangle test
+  // but makes the surface overlap itself.
   std::vector<Triangle>& star_after = scratch.star_after;
   std::vector<unsigned char>& moved_flags = scratch.moved_flags;
   star_after.clear();
@@ -239,6 +239,37 @@ bool collapse_if_valid(std::size_t keep, std::size_t gone, const std::vector<Vec
   return true;
 }
 
+/// Appends the candidate edges of a collapse pass to `candidates`: each edge
+/// (a, b), a < b, between two edge points (below `first_feature_vertex`),
+/// shorter than `max_length`, with an end `flagged(v)`, of a triangle t that
+/// is not `skipped(t)`; once for each triangle it appears in as a -> b.
+template <typename Triangle, typename Skipped, typename Flagged>
+void append_short_edges(const std::vector<Vector_3d>& points, const std::vector<Triangle>& triangles,
+                        std::size_t first_feature_vertex, double max_length, const Skipped& skipped,
+                        const Flagged& flagged, std::vector<std::array<typename Triangle::value_type, 2>>& candidates)
+{
+  typedef typename Triangle::value_type Index;
+  const double max_squared = max_length * max_length;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& tr = triangles[t];
+    // After the first pass most triangles have no flagged vertex: one test
+    // for the three edges.
+    if(skipped(t) || !(flagged(tr[0]) || flagged(tr[1]) || flagged(tr[2])))
+      continue;
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t a = tr[i], b = tr[i == 2 ? 0 : i + 1];
+      if(a < b && b < first_feature_vertex && (flagged(a) || flagged(b)))
+      {
+        const Vector_3d d = sub3(points[a], points[b]);
+        if(dot3(d, d) < max_squared)
+          candidates.push_back({{Index(a), Index(b)}});
+      }
+    }
+  }
+}
+
 /// A pass of `collapse_short_edges()` with more candidate edges takes them
 /// in batches of about this many (bounding the memory of its tables).
 constexpr std::size_t candidates_per_batch = std::size_t(1) << 18;
@@ -269,26 +300,11 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
   typedef typename std::conditional<sizeof(Index) <= 4, std::uint32_t, std::size_t>::type Triangle_index;
   if(3 * triangles.size() > std::size_t((std::numeric_limits<Triangle_index>::max)()))
     return 0;
-  const double max_squared = max_length * max_length;
   const std::vector<unsigned char>& tried = marks.near_collapse;
   std::vector<Edge> candidates;
-  for(const auto& t : triangles)
-  {
-    // After the first pass most triangles have no flagged vertex: one test
-    // for the three edges.
-    if(!tried.empty() && !(tried[t[0]] || tried[t[1]] || tried[t[2]]))
-      continue;
-    for(int i = 0; i < 3; ++i)
-    {
-      const std::size_t a = t[i], b = t[i == 2 ? 0 : i + 1];
-      if(a < b && b < first_feature_vertex && (tried.empty() || tried[a] || tried[b]))
-      {
-        const Vector_3d d = sub3(points[a], points[b]);
-        if(dot3(d, d) < max_squared)
-          candidates.push_back({{Index(a), Index(b)}});
-      }
-    }
-  }
+  append_short_edges(
+      points, triangles, first_feature_vertex, max_length, [](std::size_t) { return false; },
+      [&](std::size_t v) { return tried.empty() || tried[v] != 0; }, candidates);
   marks.near_collapse.clear();
   if(candidates.empty())
     return 0;
@@ -524,18 +540,10 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
   if(3 * triangles.size() >= std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     return 0;
   const std::size_t nv = points.size();
-  const double max_squared = max_length * max_length;
-  const auto is_candidate = [&](std::size_t a, std::size_t b) {
-    if(!(a < b && b < first_feature_vertex))
-      return false;
-    const Vector_3d d = sub3(points[a], points[b]);
-    return dot3(d, d) < max_squared;
-  };
   std::vector<Edge> candidates;
-  for(const Triangle& t : triangles)
-    for(int i = 0; i < 3; ++i)
-      if(is_candidate(t[i], t[i == 2 ? 0 : i + 1]))
-        candidates.push_back({{t[i], t[i == 2 ? 0 : i + 1]}});
+  append_short_edges(
+      points, triangles, first_feature_vertex, max_length, [](std::size_t) { return false; },
+      [](std::size_t) { return true; }, candidates);
   if(candidates.empty())
     return 0;
 
@@ -595,17 +603,9 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
         for(const std::size_t v : tr)
           moved[v] |= 2;
     }
-    for(std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      const Triangle& tr = triangles[t];
-      if(!deleted[t] && (moved[tr[0]] & 2 || moved[tr[1]] & 2 || moved[tr[2]] & 2))
-        for(int i = 0; i < 3; ++i)
-        {
-          const std::size_t a = tr[i], b = tr[i == 2 ? 0 : i + 1];
-          if((moved[a] & 2 || moved[b] & 2) && is_candidate(a, b))
-            candidates.push_back({{Index(a), Index(b)}});
-        }
-    }
+    append_short_edges(
+        points, triangles, first_feature_vertex, max_length, [&](std::size_t t) { return deleted[t] != 0; },
+        [&](std::size_t v) { return (moved[v] & 2) != 0; }, candidates);
     std::fill(moved.begin(), moved.end(), 0);
   }
   if(total > 0)
@@ -621,22 +621,26 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
 
 /// The collapse passes of `collapse_short_edges()`, without its
 /// renumbering: merged points are flagged in `removed` (one per point) and
-/// the deleted triangles removed.  Returns the number of collapses.
+/// the deleted triangles removed.  Returns the number of collapses.  The
+/// candidates of a pass are taken in batches of about `batch_size`.
 template <typename Triangle>
 std::size_t collapse_short_edge_passes(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                        std::size_t first_feature_vertex, double max_length,
                                        std::vector<unsigned char>& removed,
-                                       Collapse_rows method = Collapse_rows::AUTOMATIC)
+                                       Collapse_rows method = Collapse_rows::AUTOMATIC,
+                                       std::size_t batch_size = candidates_per_batch)
 {
   if(method == Collapse_rows::MERGED ||
      (method == Collapse_rows::AUTOMATIC && 3 * triangles.size() <= max_merged_rows_corners))
-    return collapse_short_edges_with_merged_rows(points, triangles, first_feature_vertex, max_length, removed);
+    return collapse_short_edges_with_merged_rows(points, triangles, first_feature_vertex, max_length, removed,
+                                                 batch_size);
   Collapse_marks marks;
   marks.removed.swap(removed);
   std::size_t total = 0;
   for(int pass = 0; pass < max_collapse_passes; ++pass)
   {
-    const std::size_t collapses = collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, marks);
+    const std::size_t collapses =
+        collapse_short_edges_once(points, triangles, first_feature_vertex, max_length, marks, batch_size);
     total += collapses;
     if(collapses == 0)
       break;
