@@ -56,8 +56,9 @@ struct Marching_cubes_csg_statistics : Algorithm_statistics
   std::size_t flipped_edges = 0;
   /// Flipped edges whose dihedral angle is above the feature angle: the output creases.
   std::size_t crease_edges = 0;
-  /// Edges between two edge points shorter than `sliver_edge_length` cells
-  /// that were collapsed (see the named parameter).
+  /// Edges shorter than `sliver_edge_length` cells, from an edge point to
+  /// another edge point or to a feature vertex, that were collapsed (see the
+  /// named parameter).
   std::size_t collapsed_edges = 0;
   /// Resolution check (named parameter `resolution_check`, default true):
   /// the connected components of the inputs inside the lattice's box that

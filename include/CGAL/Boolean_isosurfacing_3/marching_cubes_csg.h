@@ -103,8 +103,9 @@ namespace Boolean_isosurfacing {
  *     \cgalParamType{`double`} \cgalParamDefault{30}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{sliver_edge_length}
- *     \cgalParamDescription{edges between two edge points shorter than this many cells are
- *       collapsed (link condition, no triangle turned over); in [0, 0.5)}
+ *     \cgalParamDescription{edges shorter than this many cells from an edge point to another
+ *       edge point or to a feature vertex are collapsed (link condition, no triangle turned
+ *       over, a feature vertex never moved); in [0, 0.5)}
  *     \cgalParamType{`double`} \cgalParamDefault{0.15 with sharp features, 0 without}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{sharp_feature_output}

@@ -18,7 +18,9 @@
 //    degenerate, or becomes a worse sliver than it was (unless it stays
 //    above a quality of 1e-4);
 //  - no moved triangle folds onto a neighbour (`max_fold_cosine`).
-// Feature vertices are never moved.  In one pass each vertex takes part in
+// Feature vertices are never moved, but an edge point next to one merges
+// into it (a needle at a crease: the crease is on the exact surface, so the
+// surface moves no farther than the edge is long).  In one pass each vertex takes part in
 // at most one collapse, so the order of the collapses (sorted edges) cannot
 // matter more than one level, and the pass is O(triangles); a few passes
 // are made.  A pass after the first tries only the edges near the previous
@@ -240,7 +242,8 @@ bool collapse_if_valid(std::size_t keep, std::size_t gone, const std::vector<Vec
 }
 
 /// Appends the candidate edges of a collapse pass to `candidates`: each edge
-/// (a, b), a < b, between two edge points (below `first_feature_vertex`),
+/// (a, b), a < b, whose end a is an edge point (below
+/// `first_feature_vertex`: b is an edge point or a feature vertex),
 /// shorter than `max_length`, with an end `flagged(v)`, of a triangle t that
 /// is not `skipped(t)`; once for each triangle it appears in as a -> b.
 template <typename Triangle, typename Skipped, typename Flagged>
@@ -260,7 +263,7 @@ void append_short_edges(const std::vector<Vector_3d>& points, const std::vector<
     for(int i = 0; i < 3; ++i)
     {
       const std::size_t a = tr[i], b = tr[i == 2 ? 0 : i + 1];
-      if(a < b && b < first_feature_vertex && (flagged(a) || flagged(b)))
+      if(a < b && a < first_feature_vertex && (flagged(a) || flagged(b)))
       {
         const Vector_3d d = sub3(points[a], points[b]);
         if(dot3(d, d) < max_squared)
@@ -395,7 +398,7 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
   Collapse_scratch<Triangle> scratch;
   std::size_t collapses = 0;
   const auto try_collapse = [&](std::size_t keep, std::size_t gone) {
-    if(in_collapse[keep] || in_collapse[gone] ||
+    if(gone >= first_feature_vertex || in_collapse[keep] || in_collapse[gone] ||
        !collapse_if_valid(keep, gone, points, triangles, deleted, star,
                           [&](std::size_t w) { moved_vertex[w] = 1; }, scratch))
       return false;
@@ -533,7 +536,8 @@ template <typename Triangle>
 std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& points,
                                                   std::vector<Triangle>& triangles, std::size_t first_feature_vertex,
                                                   double max_length, std::vector<unsigned char>& removed,
-                                                  std::size_t batch_size = candidates_per_batch)
+                                                  std::size_t batch_size = candidates_per_batch,
+                                                  const std::vector<unsigned char>* only_near = nullptr)
 {
   typedef typename Triangle::value_type Index;
   typedef std::array<Index, 2> Edge;
@@ -543,7 +547,7 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
   std::vector<Edge> candidates;
   append_short_edges(
       points, triangles, first_feature_vertex, max_length, [](std::size_t) { return false; },
-      [](std::size_t) { return true; }, candidates);
+      [&](std::size_t v) { return only_near == nullptr || (*only_near)[v] != 0; }, candidates);
   if(candidates.empty())
     return 0;
 
@@ -567,7 +571,7 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
       ++batch;
       const auto star = [&](std::size_t v, auto&& f) { return rows.for_each(v, batch, f); };
       const auto try_collapse = [&](std::size_t keep, std::size_t gone) {
-        if(in_collapse[keep] || in_collapse[gone] ||
+        if(gone >= first_feature_vertex || in_collapse[keep] || in_collapse[gone] ||
            !collapse_if_valid(keep, gone, points, triangles, deleted, star,
                               [&](std::size_t w) { moved[w] = 1; },
                               scratch))
@@ -622,20 +626,27 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
 /// The collapse passes of `collapse_short_edges()`, without its
 /// renumbering: merged points are flagged in `removed` (one per point) and
 /// the deleted triangles removed.  Returns the number of collapses.  The
-/// candidates of a pass are taken in batches of about `batch_size`.
+/// candidates of a pass are taken in batches of about `batch_size`; those
+/// of the first pass are the edges with an end flagged in `*only_near` (one
+/// flag per point), or all of them if it is null.
 template <typename Triangle>
 std::size_t collapse_short_edge_passes(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                        std::size_t first_feature_vertex, double max_length,
                                        std::vector<unsigned char>& removed,
                                        Collapse_rows method = Collapse_rows::AUTOMATIC,
-                                       std::size_t batch_size = candidates_per_batch)
+                                       std::size_t batch_size = candidates_per_batch,
+                                       const std::vector<unsigned char>* only_near = nullptr)
 {
+  if(only_near != nullptr && std::find(only_near->begin(), only_near->end(), 1) == only_near->end())
+    return 0; // no end flagged (an empty flag vector would mean all edges below)
   if(method == Collapse_rows::MERGED ||
      (method == Collapse_rows::AUTOMATIC && 3 * triangles.size() <= max_merged_rows_corners))
     return collapse_short_edges_with_merged_rows(points, triangles, first_feature_vertex, max_length, removed,
-                                                 batch_size);
+                                                 batch_size, only_near);
   Collapse_marks marks;
   marks.removed.swap(removed);
+  if(only_near != nullptr)
+    marks.near_collapse = *only_near;
   std::size_t total = 0;
   for(int pass = 0; pass < max_collapse_passes; ++pass)
   {
@@ -649,54 +660,69 @@ std::size_t collapse_short_edge_passes(const std::vector<Vector_3d>& points, std
   return total;
 }
 
-/// Collapses the edges between two edge points (indices below
-/// `first_feature_vertex`) shorter than `max_length`, then removes the merged
+/// Removes the points flagged in `removed`, renumbering the others in order
+/// (the triangles, the crease edges, the corners and `labels`, if not null,
+/// with them).  Returns how many of the points below `first_feature_vertex`
+/// remain: the feature vertices still follow the edge points.
+template <typename Triangle>
+std::size_t remove_merged_points(std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
+                                 const std::vector<unsigned char>& removed, std::size_t first_feature_vertex,
+                                 std::vector<std::array<std::size_t, 2>>& creases, std::vector<std::size_t>& corners,
+                                 std::vector<std::uint8_t>* labels)
+{
+  typedef typename Triangle::value_type Index;
+  // The triangles' index type numbers them all: half the memory of size_t.
+  std::vector<Index> new_index(points.size());
+  std::size_t next = 0, edge_points = 0;
+  for(std::size_t v = 0; v < points.size(); ++v)
+  {
+    new_index[v] = Index(next);
+    if(!removed[v])
+    {
+      if(labels != nullptr)
+        (*labels)[next] = (*labels)[v];
+      points[next++] = points[v];
+      if(v < first_feature_vertex)
+        ++edge_points;
+    }
+  }
+  points.resize(next);
+  if(labels != nullptr)
+    labels->resize(next);
+  for(Triangle& tr : triangles)
+    for(Index& v : tr)
+      v = new_index[v];
+  for(auto& c : creases)
+    c = {{std::size_t(new_index[c[0]]), std::size_t(new_index[c[1]])}};
+  for(auto& c : corners)
+    c = std::size_t(new_index[c]);
+  return edge_points;
+}
+
+/// Collapses the edges shorter than `max_length` between two edge points
+/// (indices below `first_feature_vertex`), or an edge point and a feature
+/// vertex (the edge point goes), then removes the merged
 /// points and the deleted triangles, renumbering the points in order (and
 /// the crease edges and corners with them).  Returns the number of collapses.
 /// The passes are repeated (at most `max_collapse_passes`) while they
 /// collapse something: a vertex next to a lattice point often ends two
 /// short edges, and one pass moves each vertex once.  Then the remaining
 /// slivers are flipped away where the surface is nearly flat
-/// (`flip_slivers()`, the crease edges kept).  `labels` (one per point, if
-/// not null) follows the renumbering.  `ConcurrencyTag` is for the
-/// flips' corner table; the collapses are sequential.
+/// (`flip_slivers()`, the crease edges kept), and the collapses and flips
+/// are tried once more where the flips changed the triangles.  `labels`
+/// (one per point, if not null) follows the renumbering.  `ConcurrencyTag`
+/// is for the flips' corner table; the collapses are sequential.
 template <typename ConcurrencyTag = Sequential_tag, typename Triangle>
 std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
-                                        std::size_t first_feature_vertex, double max_length,
-                                        std::vector<std::array<std::size_t, 2>>& creases,
-                                        std::vector<std::size_t>& corners,
-                                        std::vector<std::uint8_t>* labels = nullptr)
+                                 std::size_t first_feature_vertex, double max_length,
+                                 std::vector<std::array<std::size_t, 2>>& creases, std::vector<std::size_t>& corners,
+                                 std::vector<std::uint8_t>* labels = nullptr)
 {
-  typedef typename Triangle::value_type Index;
   std::vector<unsigned char> removed(points.size(), 0);
-  const std::size_t total = collapse_short_edge_passes(points, triangles, first_feature_vertex, max_length, removed);
+  std::size_t total = collapse_short_edge_passes(points, triangles, first_feature_vertex, max_length, removed);
   if(total > 0)
-  {
-    // Renumber: the removed points go, the others keep their order (the
-    // triangles' index type numbers them all: half the memory of size_t).
-    std::vector<Index> new_index(points.size());
-    std::size_t next = 0;
-    for(std::size_t v = 0; v < points.size(); ++v)
-    {
-      new_index[v] = Index(next);
-      if(!removed[v])
-      {
-        if(labels != nullptr)
-          (*labels)[next] = (*labels)[v];
-        points[next++] = points[v];
-      }
-    }
-    points.resize(next);
-    if(labels != nullptr)
-      labels->resize(next);
-    for(Triangle& tr : triangles)
-      for(Index& v : tr)
-        v = new_index[v];
-    for(auto& c : creases)
-      c = {{std::size_t(new_index[c[0]]), std::size_t(new_index[c[1]])}};
-    for(auto& c : corners)
-      c = std::size_t(new_index[c]);
-  }
+    first_feature_vertex =
+        remove_merged_points(points, triangles, removed, first_feature_vertex, creases, corners, labels);
   // The flips' corner table is the memory peak of the feature path: what the
   // collapses freed goes back first.
   std::vector<unsigned char>().swap(removed);
@@ -714,8 +740,24 @@ std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Tri
   // at most a fifth of the sliver length (Sliver_flips.h).
   Sliver_flip_settings flip;
   flip.max_deviation = 0.2 * max_length;
+  std::vector<unsigned char> flipped;
+  if(flip_slivers<ConcurrencyTag>(points, triangles, creases, flip, &flipped) == 0)
+    return total;
+  // Most needles left by the passes are next to a cap: collapsing the short
+  // edge either way would squash that cap flat, and is refused.  Once the
+  // flips have removed the cap, it passes.  So the edges with an end in a
+  // flipped triangle (whose stars the flips changed) are tried again, and
+  // the flips run again if any collapses.
+  removed.assign(points.size(), 0);
+  const std::size_t again = collapse_short_edge_passes(points, triangles, first_feature_vertex, max_length, removed,
+                                                       Collapse_rows::AUTOMATIC, candidates_per_batch, &flipped);
+  std::vector<unsigned char>().swap(flipped);
+  if(again == 0)
+    return total;
+  remove_merged_points(points, triangles, removed, first_feature_vertex, creases, corners, labels);
+  std::vector<unsigned char>().swap(removed);
   flip_slivers<ConcurrencyTag>(points, triangles, creases, flip);
-  return total;
+  return total + again;
 }
 
 } // namespace Marching_cubes_csg

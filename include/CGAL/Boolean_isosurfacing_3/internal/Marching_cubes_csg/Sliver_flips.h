@@ -12,7 +12,11 @@
 // that the surface barely moves:
 //  - the new edge must not exist yet (the flip keeps a closed 2-manifold);
 //  - the edge is not a crease edge and the two triangles' normals differ by
-//    less than `max_dihedral` (no flip across a feature);
+//    less than `max_dihedral` (no flip across a feature), unless one of
+//    them has an angle below `unreliable_normal_angle`: the normal of such
+//    a sliver says little about the surface (a cap next to a crease stands
+//    at any angle to its neighbour), and the deviation bound below still
+//    holds;
 //  - the two diagonals are closer than `max_deviation` (the surface moves by
 //    at most that much), and both new triangles keep the orientation of the
 //    old ones (the quadrilateral is convex seen along its normal);
@@ -83,6 +87,7 @@ struct Sliver_flip_settings
   double max_deviation = 0;                 // length
   double cos_max_dihedral = 0.9396926207859084; // 20 degrees
   double seed_angle = 0.3490658503988659;   // 20 degrees, in radians
+  double unreliable_normal_angle = 0.08726646259971647; // 5 degrees, in radians
 };
 
 /// The opposite corner of every corner of a closed, oriented triangle soup
@@ -205,8 +210,11 @@ bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>&
 template <typename Index, typename ConcurrencyTag, typename Triangle>
 std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                       const std::vector<std::array<std::size_t, 2>>& protected_edges,
-                                      const Sliver_flip_settings& settings)
+                                      const Sliver_flip_settings& settings,
+                                      std::vector<unsigned char>* flipped_vertices)
 {
+  if(flipped_vertices != nullptr)
+    flipped_vertices->assign(points.size(), 0);
   std::vector<Index> opposite;
   if(!opposite_corners<ConcurrencyTag>(points.size(), triangles, opposite))
     return 0; // not a closed 2-manifold: leave it alone
@@ -269,6 +277,7 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
   // order, without a second vector (and its doubling) beside the corner
   // table at the memory peak of the feature path.
   std::deque<Index> queued;
+  const double cos_unreliable_normal = std::cos(settings.unreliable_normal_angle);
   const auto try_flip = [&](std::size_t c1) {
     const std::size_t c2 = std::size_t(opposite[c1]);
     const std::size_t t1 = c1 / 3, t2 = c2 / 3;
@@ -283,7 +292,9 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
       return;
     const Vector_3d n1 = unit(triangle_normal(points[a], points[b], points[c]));
     const Vector_3d n2 = unit(triangle_normal(points[b], points[a], points[d]));
-    if(!(dot3(n1, n2) > settings.cos_max_dihedral))
+    if(!(dot3(n1, n2) > settings.cos_max_dihedral) &&
+       !has_angle_below(points[a], points[b], points[c], cos_unreliable_normal) &&
+       !has_angle_below(points[b], points[a], points[d], cos_unreliable_normal))
       return;
     const Vector_3d m1 = triangle_normal(points[a], points[d], points[c]);
     const Vector_3d m2 = triangle_normal(points[d], points[b], points[c]);
@@ -320,6 +331,9 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
     link(f2 + 0, across_bc);
     link(f2 + 2, across_db);
     ++flips;
+    if(flipped_vertices != nullptr)
+      for(const std::size_t v : {a, b, c, d})
+        (*flipped_vertices)[v] = 1;
     // The outer edges, as the new triangles see them: c-a faces d (f1 + 1),
     // a-d faces c (f1 + 2), b-c faces d (f2 + 0), d-b faces c (f2 + 2).
     for(std::size_t k : {f1 + 1, f1 + 2, f2 + 0, f2 + 2})
@@ -350,17 +364,22 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
 /// Flips edges of the closed, oriented triangle soup to raise its smallest
 /// angles (see above), on a corner table of 32-bit indices where they
 /// suffice.  `protected_edges` (vertex pairs) are never flipped.  Returns
-/// the number of flips (0 if the soup is not a closed 2-manifold).  The
-/// flips are sequential; `ConcurrencyTag` is for the corner table.
+/// the number of flips (0 if the soup is not a closed 2-manifold).  If
+/// `flipped_vertices` is not null, it receives a flag per point: 1 for the
+/// vertices of the flipped triangles.  The flips are sequential;
+/// `ConcurrencyTag` is for the corner table.
 template <typename ConcurrencyTag = Sequential_tag, typename Triangle>
 std::size_t flip_slivers(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                          const std::vector<std::array<std::size_t, 2>>& protected_edges,
-                         const Sliver_flip_settings& settings)
+                         const Sliver_flip_settings& settings,
+                         std::vector<unsigned char>* flipped_vertices = nullptr)
 {
   if(3 * triangles.size() < std::size_t(std::numeric_limits<std::uint32_t>::max()) &&
      points.size() < std::size_t(std::numeric_limits<std::uint32_t>::max()))
-    return flip_slivers_with_corners<std::uint32_t, ConcurrencyTag>(points, triangles, protected_edges, settings);
-  return flip_slivers_with_corners<std::size_t, ConcurrencyTag>(points, triangles, protected_edges, settings);
+    return flip_slivers_with_corners<std::uint32_t, ConcurrencyTag>(points, triangles, protected_edges, settings,
+                                                                    flipped_vertices);
+  return flip_slivers_with_corners<std::size_t, ConcurrencyTag>(points, triangles, protected_edges, settings,
+                                                                flipped_vertices);
 }
 
 } // namespace Marching_cubes_csg
