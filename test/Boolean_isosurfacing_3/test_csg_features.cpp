@@ -985,6 +985,56 @@ TEST(CsgFeaturesTable, SliverFlipsRaiseTheSmallestAngleOnFlatFaces)
   EXPECT_NEAR(PMP::volume(out), PMP::volume(plain.mesh), 1e-12);
 }
 
+// The flips after the second round of collapses run only near the stars
+// those collapses changed, on a corner table of that part.  With every
+// vertex flagged the part is the whole soup: the same flips as the full
+// run.  With some flagged, on plain outputs whose slivers are everywhere:
+// flips happen, only inside the part, and the soup stays a closed
+// 2-manifold.
+TEST(CsgFeaturesTable, SliverFlipsNearFlaggedVerticesStayInTheirPart)
+{
+  const std::vector<Csg_run> runs = plain_runs_for_sliver_passes();
+  for(const Csg_run& plain : runs)
+  {
+    const std::vector<MC::Vector_3d> points = points_of(plain);
+    MC::Sliver_flip_settings settings;
+    settings.max_deviation = 0.2 * 0.15 * plain.spacing; // as collapse_short_edges() sets it
+    std::vector<Tri> full = plain.triangles, near = plain.triangles;
+    const std::size_t flips = MC::flip_slivers(points, full, {}, settings);
+    EXPECT_EQ(MC::flip_slivers_near(points, near, {}, settings, std::vector<unsigned char>(points.size(), 1)), flips);
+    EXPECT_EQ(near, full);
+    // The vertices of one triangle in 50, and their part: the triangles
+    // within two edges of them.
+    std::vector<unsigned char> flagged(points.size(), 0), in_part(points.size(), 0);
+    for(std::size_t t = 0; t < plain.triangles.size(); t += 50)
+      for(const std::size_t v : plain.triangles[t])
+        flagged[v] = in_part[v] = 1;
+    for(int ring = 0; ring < 2; ++ring)
+    {
+      std::vector<unsigned char> next = in_part;
+      for(const Tri& t : plain.triangles)
+        if(in_part[t[0]] || in_part[t[1]] || in_part[t[2]])
+          next[t[0]] = next[t[1]] = next[t[2]] = 1;
+      in_part.swap(next);
+    }
+    std::vector<Tri> partial = plain.triangles;
+    const std::size_t partial_flips = MC::flip_slivers_near(points, partial, {}, settings, flagged);
+    EXPECT_GT(partial_flips, 0u);
+    EXPECT_LT(partial_flips, flips);
+    ASSERT_EQ(partial.size(), plain.triangles.size());
+    for(std::size_t t = 0; t < partial.size(); ++t)
+    {
+      const Tri& before = plain.triangles[t];
+      if(!in_part[before[0]] && !in_part[before[1]] && !in_part[before[2]])
+        ASSERT_EQ(partial[t], before) << "a triangle outside the part flipped";
+    }
+    ASSERT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(partial));
+    Mesh out;
+    PMP::polygon_soup_to_polygon_mesh(plain.points, partial, out);
+    EXPECT_TRUE(CGAL::is_closed(out));
+  }
+}
+
 // ------------------------------------------------------------------ where the result can be
 
 TEST(CsgResultBox, TheExpressionBoundsTheResult)

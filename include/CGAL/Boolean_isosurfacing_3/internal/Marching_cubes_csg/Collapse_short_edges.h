@@ -335,6 +335,9 @@ struct Collapse_marks
   // the vertices of the triangles that share a vertex with a triangle the
   // pass moved (empty if it collapsed nothing: the passes stop).
   std::vector<unsigned char> near_collapse;
+  // If not null: 1 for the point that stays in each collapse (whose star
+  // changed).
+  std::vector<unsigned char>* kept = nullptr;
 };
 
 /// One pass of `collapse_short_edges()`: each vertex takes part in at most
@@ -454,6 +457,8 @@ std::size_t collapse_short_edges_once(const std::vector<Vector_3d>& points, std:
       return false;
     in_collapse[gone] = in_collapse[keep] = 1; // in no other collapse of this pass
     marks.removed[gone] = 1;
+    if(marks.kept != nullptr)
+      (*marks.kept)[keep] = 1;
     ++collapses;
     return true;
   };
@@ -581,13 +586,15 @@ private:
 /// candidates, batches and tests as `collapse_short_edges_once()` repeated
 /// (so the same collapses), but the rows are made once instead of by three
 /// scans of the triangles each pass, and the deleted triangles are removed
-/// once, at the end.  Merged points are flagged in `removed`.
+/// once, at the end.  Merged points are flagged in `removed`, and the
+/// points that stay in a collapse in `*kept` if it is not null.
 template <typename Triangle>
 std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& points,
                                                   std::vector<Triangle>& triangles, std::size_t first_feature_vertex,
                                                   double max_length, std::vector<unsigned char>& removed,
                                                   std::size_t batch_size = candidates_per_batch,
-                                                  const std::vector<unsigned char>* only_near = nullptr)
+                                                  const std::vector<unsigned char>* only_near = nullptr,
+                                                  std::vector<unsigned char>* kept = nullptr)
 {
   typedef typename Triangle::value_type Index;
   typedef std::array<Index, 2> Edge;
@@ -631,6 +638,8 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
         collapsed.push_back(Index(keep));
         rows.merge(gone, keep, batch);
         removed[gone] = 1;
+        if(kept != nullptr)
+          (*kept)[keep] = 1;
         ++collapses;
         return true;
       };
@@ -678,22 +687,25 @@ std::size_t collapse_short_edges_with_merged_rows(const std::vector<Vector_3d>& 
 /// the deleted triangles removed.  Returns the number of collapses.  The
 /// candidates of a pass are taken in batches of about `batch_size`; those
 /// of the first pass are the edges with an end flagged in `*only_near` (one
-/// flag per point), or all of them if it is null.
+/// flag per point), or all of them if it is null.  If `kept` is not null
+/// (one flag per point), the point that stays in each collapse is flagged.
 template <typename Triangle>
 std::size_t collapse_short_edge_passes(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                        std::size_t first_feature_vertex, double max_length,
                                        std::vector<unsigned char>& removed,
                                        Collapse_rows method = Collapse_rows::AUTOMATIC,
                                        std::size_t batch_size = candidates_per_batch,
-                                       const std::vector<unsigned char>* only_near = nullptr)
+                                       const std::vector<unsigned char>* only_near = nullptr,
+                                       std::vector<unsigned char>* kept = nullptr)
 {
   if(only_near != nullptr && std::find(only_near->begin(), only_near->end(), 1) == only_near->end())
     return 0; // no end flagged (an empty flag vector would mean all edges below)
   if(method == Collapse_rows::MERGED ||
      (method == Collapse_rows::AUTOMATIC && 3 * triangles.size() <= max_merged_rows_corners))
     return collapse_short_edges_with_merged_rows(points, triangles, first_feature_vertex, max_length, removed,
-                                                 batch_size, only_near);
+                                                 batch_size, only_near, kept);
   Collapse_marks marks;
+  marks.kept = kept;
   marks.removed.swap(removed);
   if(only_near != nullptr)
     marks.near_collapse = *only_near;
@@ -798,15 +810,25 @@ std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Tri
   // flips have removed the cap, it passes.  So the edges with an end in a
   // flipped triangle (whose stars the flips changed) are tried again, and
   // the flips run again if any collapses.
+  // The flips then run only near the stars these collapses changed
+  // (`flip_slivers_near()`): a second full run cost as much as the first.
   removed.assign(points.size(), 0);
+  std::vector<unsigned char> kept(points.size(), 0);
   const std::size_t again = collapse_short_edge_passes(points, triangles, first_feature_vertex, max_length, removed,
-                                                       Collapse_rows::AUTOMATIC, candidates_per_batch, &flipped);
+                                                       Collapse_rows::AUTOMATIC, candidates_per_batch, &flipped,
+                                                       &kept);
   std::vector<unsigned char>().swap(flipped);
   if(again == 0)
     return total;
+  // The flags follow the renumbering (merged points are never kept).
+  std::size_t next = 0;
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(!removed[v])
+      kept[next++] = kept[v];
+  kept.resize(next);
   remove_merged_points(points, triangles, removed, first_feature_vertex, creases, corners, labels);
   std::vector<unsigned char>().swap(removed);
-  flip_slivers<ConcurrencyTag>(points, triangles, creases, flip);
+  flip_slivers_near(points, triangles, creases, flip, kept);
   return total + again;
 }
 

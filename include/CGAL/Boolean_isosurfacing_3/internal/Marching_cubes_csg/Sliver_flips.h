@@ -105,10 +105,11 @@ struct Sliver_flip_settings
 /// above, 2^16 entries or 1/128 of the corners, whichever is more, so that
 /// the lists of the ranges in work add little to the table at the memory
 /// peak of the feature path (1/32 was 60 MB more at 2048 cells on two
-/// threads).
+/// threads).  With `with_border`, a part of a closed soup is accepted: an
+/// edge in one triangle only (the part's border) faces `Index(-1)`.
 template <typename ConcurrencyTag = Sequential_tag, typename Index, typename Triangle>
 bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>& triangles, std::vector<Index>& opposite,
-                      std::size_t max_star_corners = 0)
+                      std::size_t max_star_corners = 0, bool with_border = false)
 {
   const std::size_t corners = 3 * triangles.size();
   if(max_star_corners == 0)
@@ -191,6 +192,8 @@ bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>&
             unique = twin == nullptr;
             twin = j;
           }
+        if(twin == nullptr && with_border)
+          continue;
         if(twin == nullptr || !unique)
         {
           manifold = false;
@@ -206,18 +209,22 @@ bool opposite_corners(std::size_t number_of_points, const std::vector<Triangle>&
 
 /// Flips edges of the closed, oriented triangle soup to raise its smallest
 /// angles (see above).  `protected_edges` (vertex pairs) are never flipped.
-/// Returns the number of flips.
+/// Returns the number of flips.  With `part`, `triangles` is a part of a
+/// closed soup: an edge on its border is never flipped, nor one whose new
+/// edge could not be checked against the star of its first end (a star
+/// that leaves the part).
 template <typename Index, typename ConcurrencyTag, typename Triangle>
 std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
                                       const std::vector<std::array<std::size_t, 2>>& protected_edges,
                                       const Sliver_flip_settings& settings,
-                                      std::vector<unsigned char>* flipped_vertices)
+                                      std::vector<unsigned char>* flipped_vertices, bool part = false)
 {
   if(flipped_vertices != nullptr)
     flipped_vertices->assign(points.size(), 0);
   std::vector<Index> opposite;
-  if(!opposite_corners<ConcurrencyTag>(points.size(), triangles, opposite))
+  if(!opposite_corners<ConcurrencyTag>(points.size(), triangles, opposite, 0, part))
     return 0; // not a closed 2-manifold: leave it alone
+  const Index none = Index(-1);
   const auto key = [](std::size_t a, std::size_t b) {
     return a < b ? (std::uint64_t(a) << 32) | std::uint64_t(b) : (std::uint64_t(b) << 32) | std::uint64_t(a);
   };
@@ -246,6 +253,8 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
     {
       if(vertex(next(k)) == d)
         return true;
+      if(opposite[previous(k)] == none)
+        return true; // the star leaves the part: unknown, so no flip
       k = previous(std::size_t(opposite[previous(k)]));
       if(k == c)
         return false;
@@ -265,9 +274,10 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
         x /= l;
     return v;
   };
-  const auto link = [&](std::size_t x, std::size_t y) {
-    opposite[x] = Index(y);
-    opposite[y] = Index(x);
+  const auto link = [&](std::size_t x, Index y) {
+    opposite[x] = y;
+    if(y != none)
+      opposite[std::size_t(y)] = Index(x);
   };
   std::size_t flips = 0;
   const std::size_t max_flips = 4 * triangles.size();
@@ -279,6 +289,8 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
   std::deque<Index> queued;
   const double cos_unreliable_normal = std::cos(settings.unreliable_normal_angle);
   const auto try_flip = [&](std::size_t c1) {
+    if(opposite[c1] == none)
+      return; // on the part's border
     const std::size_t c2 = std::size_t(opposite[c1]);
     const std::size_t t1 = c1 / 3, t2 = c2 / 3;
     const std::size_t c = vertex(c1), a = vertex(next(c1)), b = vertex(previous(c1)), d = vertex(c2);
@@ -320,12 +332,12 @@ std::size_t flip_slivers_with_corners(const std::vector<Vector_3d>& points, std:
       return;
     // The outer corners: across b-c (facing a in t1), c-a (facing b in t1),
     // a-d (facing b in t2) and d-b (facing a in t2).
-    const std::size_t across_bc = opposite[next(c1)], across_ca = opposite[previous(c1)];
-    const std::size_t across_ad = opposite[next(c2)], across_db = opposite[previous(c2)];
+    const Index across_bc = opposite[next(c1)], across_ca = opposite[previous(c1)];
+    const Index across_ad = opposite[next(c2)], across_db = opposite[previous(c2)];
     triangles[t1] = make_triangle<Triangle>(a, d, c);
     triangles[t2] = make_triangle<Triangle>(d, b, c);
     const std::size_t f1 = 3 * t1, f2 = 3 * t2; // corners of a, d, c and of d, b, c
-    link(f1 + 0, f2 + 1); // facing the new edge d-c
+    link(f1 + 0, Index(f2 + 1)); // facing the new edge d-c
     link(f1 + 1, across_ca);
     link(f1 + 2, across_ad);
     link(f2 + 0, across_bc);
@@ -380,6 +392,50 @@ std::size_t flip_slivers(const std::vector<Vector_3d>& points, std::vector<Trian
                                                                     flipped_vertices);
   return flip_slivers_with_corners<std::size_t, ConcurrencyTag>(points, triangles, protected_edges, settings,
                                                                 flipped_vertices);
+}
+
+/// `flip_slivers()` where the triangles changed since a previous run, i.e.
+/// near the vertices flagged in `changed` (one flag per point) whose stars
+/// changed: every edge whose flip test reads a changed triangle has its ends
+/// and its two opposite vertices within two edges of a flagged vertex.  The
+/// flips run on the triangles with a vertex within those two rings (whose
+/// stars they hold whole), with a corner table of that part only; elsewhere
+/// nothing a flip test reads has changed since the previous run, which left
+/// nothing to flip there (up to its work list's order).  The full run's
+/// corner table and seed scan cost as much as the first run.
+template <typename Triangle>
+std::size_t flip_slivers_near(const std::vector<Vector_3d>& points, std::vector<Triangle>& triangles,
+                              const std::vector<std::array<std::size_t, 2>>& protected_edges,
+                              const Sliver_flip_settings& settings, const std::vector<unsigned char>& changed)
+{
+  // ring: 1 for a flagged vertex, 2 and 3 for the first and second rings.
+  std::vector<unsigned char> ring(changed);
+  for(unsigned char level = 1; level <= 2; ++level)
+    for(const Triangle& tr : triangles)
+      if((ring[tr[0]] != 0 && ring[tr[0]] <= level) || (ring[tr[1]] != 0 && ring[tr[1]] <= level) ||
+         (ring[tr[2]] != 0 && ring[tr[2]] <= level))
+        for(const std::size_t v : tr)
+          if(ring[v] == 0)
+            ring[v] = level + 1;
+  std::vector<Triangle> part;
+  std::vector<std::size_t> whole_index;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& tr = triangles[t];
+    if(ring[tr[0]] != 0 || ring[tr[1]] != 0 || ring[tr[2]] != 0)
+    {
+      part.push_back(tr);
+      whole_index.push_back(t);
+    }
+  }
+  if(part.empty() || 3 * part.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+    return 0;
+  const std::size_t flips = flip_slivers_with_corners<std::uint32_t, Sequential_tag>(
+      points, part, protected_edges, settings, nullptr, true);
+  // A flip rewrites its two triangles in place: they go back where they were.
+  for(std::size_t t = 0; t < part.size(); ++t)
+    triangles[whole_index[t]] = part[t];
+  return flips;
 }
 
 } // namespace Marching_cubes_csg
