@@ -1303,5 +1303,53 @@ TEST(CsgFeatures, MovedCopiesThatOnceSelfIntersectedDoNot)
   }
 }
 
+// A face passing 1e-7 r from a lattice point: three edge points within
+// rounding of it, a tiny triangle between them and needles of a quality
+// near 1e-12 around it, whose normals are rounding.  The collapses must
+// merge the cluster into one point (they once refused it, since every move
+// kept such a needle degenerate: 0.0001 degree triangles on 16 of 59 runs
+// of the moved copies).  The face's normal (1, sqrt 2, sqrt 3) keeps its
+// plane away from the other lattice points.  (With a rational normal the
+// plane passes as close to a lattice point every few cells, and where that
+// is next to an edge of the tetrahedron a cluster can be part of a tiny
+// closed component, which no collapse may squash.)
+TEST(CsgFeatures, EdgePointsWithinRoundingOfALatticePointMergeIntoOne)
+{
+  const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
+  const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(PMP::bbox(a), 32);
+  const double r = lattice.spacing();
+  Vector n(1, std::sqrt(2.0), std::sqrt(3.0));
+  n = n / std::sqrt(n.squared_length());
+  Point l;
+  {
+    std::array<double, 3> c;
+    for(int axis = 0; axis < 3; ++axis)
+      c[axis] = lattice.coordinate(axis, lattice.first_index_not_below(axis, 0.5));
+    l = Point(c[0], c[1], c[2]);
+  }
+  // A tetrahedron inside the box whose face (outward normal n) lies 1e-7 r
+  // outside the lattice point l.
+  const Point on_face = l + n * (1e-7 * r);
+  const Vector u = CGAL::cross_product(n, Vector(1, 0, 0)) / std::sqrt(CGAL::cross_product(n, Vector(1, 0, 0)).squared_length());
+  const Vector v = CGAL::cross_product(n, u);
+  const double pi_3 = 2 * pi / 3;
+  Mesh b;
+  CGAL::make_tetrahedron(on_face + 0.3 * u, on_face + 0.3 * (std::cos(pi_3) * u + std::sin(pi_3) * v),
+                         on_face + 0.3 * (std::cos(2 * pi_3) * u + std::sin(2 * pi_3) * v), l - 0.25 * n, b);
+  if(PMP::volume(b) < 0)
+    PMP::reverse_face_orientations(b);
+  const Csg_run plain = run_csg({a, b}, "A & !B", 32, false, 0); // no feature, no collapse
+  double tiny = 0;
+  for(auto f : faces(plain.mesh))
+    tiny += PMP::face_area(f, plain.mesh) < 1e-10 * r * r ? 1 : 0;
+  EXPECT_GE(tiny, 1.0) << "the construction must make a cluster of edge points";
+  const Csg_run run = run_csg({a, b}, "A & !B", 32);
+  check_valid(run, "box minus a tetrahedron 1e-7 r from lattice points");
+  const double angle = smallest_angle_degrees(run.mesh);
+  std::cout << "face 1e-7 r from a lattice point: " << tiny << " tiny triangles without collapses, smallest angle "
+            << smallest_angle_degrees(plain.mesh) << " -> " << angle << " degrees\n";
+  EXPECT_GT(angle, 1.0);
+}
+
 
 } // namespace

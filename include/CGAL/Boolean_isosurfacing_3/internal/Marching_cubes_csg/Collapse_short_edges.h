@@ -150,11 +150,18 @@ bool collapse_if_valid(std::size_t keep, std::size_t gone, const std::vector<Vec
         w = Index(keep);
     const Vector_3d &b0 = points[before[0]], &b1 = points[before[1]], &b2 = points[before[2]];
     const Vector_3d &a0 = points[after[0]], &a1 = points[after[1]], &a2 = points[after[2]];
-    const double q1 = triangle_quality(a0, a1, a2);
+    const double q0 = triangle_quality(b0, b1, b2), q1 = triangle_quality(a0, a1, a2);
+    const bool short_side =
+        collapsible(after[0], after[1]) || collapsible(after[1], after[2]) || collapsible(after[2], after[0]);
+    // A needle that was degenerate already and keeps a collapsible short
+    // side: edge points within rounding of one lattice point (the surface
+    // passes through it up to 1e-6 r), whose needles all have a quality of
+    // about 1e-12 and a normal made of rounding; they go together, one
+    // collapse at a time, and no test on such a normal can pass.
+    if(q0 <= degenerate_quality && short_side)
+      return true;
     return dot3(triangle_normal(b0, b1, b2), triangle_normal(a0, a1, a2)) > 0 &&
-           (q1 > 1e-4 || q1 >= triangle_quality(b0, b1, b2) || collapsible(after[0], after[1]) ||
-            collapsible(after[1], after[2]) || collapsible(after[2], after[0])) &&
-           q1 > degenerate_quality;
+           (q1 > 1e-4 || q1 >= q0 || short_side) && q1 > degenerate_quality;
   });
   if(!keep_shape)
     return false;
