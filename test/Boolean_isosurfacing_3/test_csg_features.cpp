@@ -1330,7 +1330,8 @@ TEST(CsgFeatures, EdgePointsWithinRoundingOfALatticePointMergeIntoOne)
   // A tetrahedron inside the box whose face (outward normal n) lies 1e-7 r
   // outside the lattice point l.
   const Point on_face = l + n * (1e-7 * r);
-  const Vector u = CGAL::cross_product(n, Vector(1, 0, 0)) / std::sqrt(CGAL::cross_product(n, Vector(1, 0, 0)).squared_length());
+  const Vector across = CGAL::cross_product(n, Vector(1, 0, 0));
+  const Vector u = across / std::sqrt(across.squared_length());
   const Vector v = CGAL::cross_product(n, u);
   const double pi_3 = 2 * pi / 3;
   Mesh b;

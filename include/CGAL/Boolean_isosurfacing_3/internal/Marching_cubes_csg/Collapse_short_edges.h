@@ -150,7 +150,11 @@ bool collapse_if_valid(std::size_t keep, std::size_t gone, const std::vector<Vec
         w = Index(keep);
     const Vector_3d &b0 = points[before[0]], &b1 = points[before[1]], &b2 = points[before[2]];
     const Vector_3d &a0 = points[after[0]], &a1 = points[after[1]], &a2 = points[after[2]];
-    const double q0 = triangle_quality(b0, b1, b2), q1 = triangle_quality(a0, a1, a2);
+    const double q1 = triangle_quality(a0, a1, a2);
+    const bool same_side = dot3(triangle_normal(b0, b1, b2), triangle_normal(a0, a1, a2)) > 0;
+    if(same_side && q1 > 1e-4)
+      return true; // most moved triangles: nothing else to compute
+    const double q0 = triangle_quality(b0, b1, b2);
     const bool short_side =
         collapsible(after[0], after[1]) || collapsible(after[1], after[2]) || collapsible(after[2], after[0]);
     // A needle that was degenerate already and keeps a collapsible short
@@ -160,8 +164,7 @@ bool collapse_if_valid(std::size_t keep, std::size_t gone, const std::vector<Vec
     // collapse at a time, and no test on such a normal can pass.
     if(q0 <= degenerate_quality && short_side)
       return true;
-    return dot3(triangle_normal(b0, b1, b2), triangle_normal(a0, a1, a2)) > 0 &&
-           (q1 > 1e-4 || q1 >= q0 || short_side) && q1 > degenerate_quality;
+    return same_side && (q1 >= q0 || short_side) && q1 > degenerate_quality;
   });
   if(!keep_shape)
     return false;
@@ -827,15 +830,10 @@ std::size_t collapse_short_edges(std::vector<Vector_3d>& points, std::vector<Tri
   std::vector<unsigned char>().swap(flipped);
   if(again == 0)
     return total;
-  // The flags follow the renumbering (merged points are never kept).
-  std::size_t next = 0;
-  for(std::size_t v = 0; v < points.size(); ++v)
-    if(!removed[v])
-      kept[next++] = kept[v];
-  kept.resize(next);
-  remove_merged_points(points, triangles, removed, first_feature_vertex, creases, corners, labels);
-  std::vector<unsigned char>().swap(removed);
+  // Before the renumbering, which the flips do not need (the merged points
+  // are in no triangle), so `kept` keeps its numbering.
   flip_slivers_near(points, triangles, creases, flip, kept);
+  remove_merged_points(points, triangles, removed, first_feature_vertex, creases, corners, labels);
   return total + again;
 }
 
