@@ -17,6 +17,7 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/post_process_without_self_intersections.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
 #include <CGAL/Boolean_isosurfacing_3/overlapping_shells.h>
 #include <CGAL/Boolean_isosurfacing_3/remesh_keeping_creases.h>
@@ -1250,6 +1251,141 @@ TEST(CsgCompactOutput, RemeshingKeepsCreasesAndCorners)
   EXPECT_NEAR(PMP::volume(r.mesh), PMP::volume(exact), 1e-9);
   EXPECT_LT(sample_distances(samples_of(sharp, r.spacing), marked_creases(r), r.spacing).max, 1e-9);
   EXPECT_THROW(BI::remesh_keeping_creases(r.mesh, -1.0), BI::Invalid_input_error);
+}
+
+// The self-intersection guard of simplify_keeping_creases() and
+// remesh_keeping_creases(), with a process that pulls the top vertex of a
+// sphere through its bottom unless that vertex's faces are frozen.
+struct Pull_top_through
+{
+  bool always = false;
+  template <typename Crease, typename Corner>
+  std::size_t operator()(Mesh& work, Crease, Corner, const std::vector<Mesh::Face_index>& frozen) const
+  {
+    Mesh::Vertex_index top = *vertices(work).begin();
+    for(auto v : vertices(work))
+      if(work.point(v).z() > work.point(top).z())
+        top = v;
+    if(!always)
+      for(auto f : frozen)
+        for(auto v : vertices_around_face(halfedge(f, work), work))
+          if(v == top)
+            return 0;
+    work.point(top) = Point(0.01, 0.02, -2);
+    return 1;
+  }
+};
+
+Mesh sphere_with_marks(std::size_t& creases, std::size_t& corners)
+{
+  Mesh m;
+  BI::make_icosphere(m, Point(0, 0, 0), 1.0, 3);
+  auto crease = m.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
+  auto corner = m.add_property_map<Mesh::Vertex_index, bool>("v:corner", false).first;
+  creases = corners = 0;
+  for(auto e : edges(m))
+    if(std::size_t(e) % 7 == 0)
+      crease[e] = true, ++creases;
+  for(auto v : vertices(m))
+    if(std::size_t(v) % 11 == 0)
+      corner[v] = true, ++corners;
+  return m;
+}
+
+TEST(CsgPostProcessing, ASelfIntersectingRunIsRedoneWithItsSurroundingsFrozen)
+{
+  std::size_t creases, corners;
+  Mesh m = sphere_with_marks(creases, corners);
+  auto crease = m.property_map<Mesh::Edge_index, bool>("e:crease").first;
+  auto corner = m.property_map<Mesh::Vertex_index, bool>("v:corner").first;
+  const double volume = PMP::volume(m);
+  const auto s = BI::internal::post_process_without_self_intersections(m, crease, corner, 0.1, "test", Pull_top_through());
+  EXPECT_EQ(s.runs, 2u);
+  EXPECT_GT(s.frozen_faces, 0u);
+  EXPECT_GT(s.intersecting_pairs_found, 0u);
+  EXPECT_FALSE(s.reverted);
+  EXPECT_TRUE(s.warnings.empty());
+  m.collect_garbage();
+  EXPECT_FALSE(PMP::does_self_intersect(m));
+  EXPECT_NEAR(PMP::volume(m), volume, 1e-12);
+  // The marks come back with the kept result.
+  std::size_t kept_creases = 0, kept_corners = 0;
+  for(auto e : edges(m))
+    kept_creases += crease[e] ? 1 : 0;
+  for(auto v : vertices(m))
+    kept_corners += corner[v] ? 1 : 0;
+  EXPECT_EQ(kept_creases, creases);
+  EXPECT_EQ(kept_corners, corners);
+}
+
+TEST(CsgPostProcessing, AResultThatAlwaysSelfIntersectsLeavesTheMeshAsItWas)
+{
+  std::size_t creases, corners;
+  Mesh m = sphere_with_marks(creases, corners);
+  auto crease = m.property_map<Mesh::Edge_index, bool>("e:crease").first;
+  auto corner = m.property_map<Mesh::Vertex_index, bool>("v:corner").first;
+  const Mesh before = m;
+  Pull_top_through always;
+  always.always = true;
+  const auto s = BI::internal::post_process_without_self_intersections(m, crease, corner, 0.1, "test", always);
+  EXPECT_EQ(s.runs, 4u);
+  EXPECT_TRUE(s.reverted);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("self-intersected"), std::string::npos);
+  ASSERT_EQ(m.number_of_vertices(), before.number_of_vertices());
+  for(auto v : vertices(m))
+    EXPECT_EQ(m.point(v), before.point(v));
+}
+
+TEST(CsgPostProcessing, AnInputThatSelfIntersectsIsProcessedWithAWarning)
+{
+  Mesh m, other;
+  BI::make_icosphere(m, Point(0, 0, 0), 1.0, 2);
+  BI::make_icosphere(other, Point(0.5, 0.1, 0.2), 1.0, 2);
+  CGAL::copy_face_graph(other, m);
+  ASSERT_TRUE(PMP::does_self_intersect(m));
+  CGAL::Static_boolean_property_map<Mesh::Edge_index, false> no_crease;
+  CGAL::Static_boolean_property_map<Mesh::Vertex_index, false> no_corner;
+  const auto s = BI::internal::post_process_without_self_intersections(
+      m, no_crease, no_corner, 0.1, "test",
+      [](Mesh&, auto, auto, const std::vector<Mesh::Face_index>&) { return std::size_t(0); });
+  EXPECT_EQ(s.runs, 1u);
+  EXPECT_FALSE(s.reverted);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("input mesh self-intersects"), std::string::npos);
+}
+
+// Moved copies whose first remeshing and first simplification self-intersect
+// (at walls and gaps thinner than a cell): the results kept do not.
+TEST(CsgPostProcessing, RemeshedAndSimplifiedMovedCopiesDoNotSelfIntersect)
+{
+  const std::string dir = std::string(BISO_SHARED_DATA_DIR) + "/meshes/";
+  const struct
+  {
+    const char* file;
+    const char* expression;
+    bool remesh;
+  } cases[] = {{"armadillo.obj", "A | B", true}, {"bunny_hoppe.off", "A & !B", false}};
+  for(const auto& c : cases)
+  {
+    Mesh mesh;
+    BI::IO::read_closed_triangle_mesh(dir + c.file, mesh);
+    Csg_mesh r = csg_mesh({mesh, BI::test::moved_copy(mesh)}, c.expression, 48);
+    const double volume = PMP::volume(r.mesh);
+    const auto maps = CGAL::parameters::edge_is_constrained_map(r.crease).vertex_is_constrained_map(r.corner);
+    const BI::Post_processing_statistics s = c.remesh ? BI::remesh_keeping_creases(r.mesh, r.spacing, maps)
+                                                      : BI::simplify_keeping_creases(r.mesh, 0.1 * r.spacing, maps);
+    r.mesh.collect_garbage();
+    const std::string what = std::string(c.remesh ? "remeshed " : "simplified ") + c.file + " " + c.expression;
+    std::cout << what << " copy at 48 cells: " << s.runs << " runs, " << s.intersecting_pairs_found
+              << " intersecting pairs thrown away, " << s.frozen_faces << " faces frozen, "
+              << r.mesh.number_of_faces() << " triangles\n";
+    EXPECT_GE(s.runs, 2u) << what;
+    EXPECT_FALSE(s.reverted) << what;
+    EXPECT_TRUE(BI::test::is_closed_triangle_mesh(r.mesh)) << what;
+    EXPECT_FALSE(PMP::does_self_intersect(r.mesh)) << what;
+    EXPECT_NEAR(PMP::volume(r.mesh), volume, 0.01 * volume) << what;
+  }
 }
 
 // ------------------------------------------------------------------ the shared pairs

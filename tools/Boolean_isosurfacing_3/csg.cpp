@@ -26,6 +26,7 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
 #include <CGAL/Boolean_isosurfacing_3/overlapping_shells.h>
@@ -123,6 +124,7 @@ struct Result
   BI::Marching_cubes_csg_statistics statistics;
   BI::Regular_lattice_3 lattice;
   BI::Crease_network creases; // vertex indices of `soup`
+  std::optional<BI::Post_processing_statistics> post_processing; // --simplify or --remesh
 };
 
 std::size_t max_memory_bytes(const Options& options)
@@ -236,10 +238,11 @@ BI::Crease_network crease_polylines(const std::vector<std::array<std::size_t, 2>
 // work on a halfedge mesh, built here only when asked for; the soup and the
 // features are then replaced by the processed mesh's (compacted: vertex i is
 // soup point i).
-void post_process(Soup& soup, BI::Marching_cubes_csg_features& features, const Options& options, double spacing)
+std::optional<BI::Post_processing_statistics> post_process(Soup& soup, BI::Marching_cubes_csg_features& features,
+                                                          const Options& options, double spacing)
 {
   if(soup.triangles.empty() || (!options.simplify && !options.remesh))
-    return;
+    return std::nullopt;
   Mesh output;
   {
     std::vector<Point> points;
@@ -260,10 +263,10 @@ void post_process(Soup& soup, BI::Marching_cubes_csg_features& features, const O
   for(std::size_t v : features.corner_vertices)
     corner[Mesh::Vertex_index(Mesh::size_type(v))] = true;
   const auto maps = CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner);
-  if(options.simplify)
-    BI::simplify_keeping_creases(output, options.simplify_cells * spacing, maps);
-  else
-    BI::remesh_keeping_creases(output, options.remesh_length > 0 ? options.remesh_length : spacing, maps);
+  const BI::Post_processing_statistics statistics =
+      options.simplify
+          ? BI::simplify_keeping_creases(output, options.simplify_cells * spacing, maps)
+          : BI::remesh_keeping_creases(output, options.remesh_length > 0 ? options.remesh_length : spacing, maps);
   output.collect_garbage();
   soup = soup_of(output);
   features = BI::Marching_cubes_csg_features();
@@ -276,6 +279,7 @@ void post_process(Soup& soup, BI::Marching_cubes_csg_features& features, const O
   for(const Mesh::Vertex_index v : output.vertices())
     if(corner[v])
       features.corner_vertices.push_back(std::size_t(v));
+  return statistics;
 }
 
 // The lattice encloses `box` (the inputs' bounding box) with `margin_cells`;
@@ -302,7 +306,7 @@ Result run_csg(const std::vector<Soup>& meshes, const BI::Boolean_expression& ex
 #endif
     r.statistics = BI::marching_cubes_csg<CGAL::Sequential_tag>(r.lattice, meshes, expression, r.soup.points,
                                                                 r.soup.triangles, np);
-  post_process(r.soup, features, options, r.lattice.spacing());
+  r.post_processing = post_process(r.soup, features, options, r.lattice.spacing());
   r.creases = crease_polylines(features.crease_edges, features.corner_vertices);
   return r;
 }
@@ -355,6 +359,23 @@ void report_result(Tool& tool, const Result& r)
   tool.stage("edges", "placed " + std::to_string(s.crossings) + " edge crossings", s.seconds_edges);
   tool.stage("triangulation", "triangulated " + std::to_string(r.soup.triangles.size()) + " triangles",
              s.seconds_triangulation);
+  if(r.post_processing)
+  {
+    const BI::Post_processing_statistics& p = *r.post_processing;
+    tool.stage("post_processing",
+               std::string(p.edges_collapsed > 0 ? "simplified" : "post-processed") + " in " +
+                   std::to_string(p.runs) + (p.runs == 1 ? " run" : " runs") + " (" +
+                   std::to_string(p.frozen_faces) + " faces kept near self-intersections of earlier runs)",
+               p.seconds);
+    for(const std::string& w : p.warnings)
+      tool.warning(w);
+    biso_tools::Json_object post;
+    post.set("runs", p.runs);
+    post.set("frozen_faces", p.frozen_faces);
+    post.set("intersecting_pairs_found", p.intersecting_pairs_found);
+    post.set("reverted", p.reverted);
+    tool.summary().set("post_processing", post);
+  }
   biso_tools::Json_object lattice;
   lattice.set_raw("points", biso_tools::json_number_array({double(n[0]), double(n[1]), double(n[2])}));
   lattice.set("spacing", r.lattice.spacing());

@@ -4,7 +4,9 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_REMESH_KEEPING_CREASES_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_REMESH_KEEPING_CREASES_H
 
+#include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/post_process_without_self_intersections.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Boolean_isosurfacing {
@@ -28,6 +31,14 @@ namespace Boolean_isosurfacing {
  * (split and collapsed along themselves, never moved off them) and the
  * corners as constrained vertices (never moved or removed).  Marching Cubes
  * gives triangles of every shape; this gives nearly equilateral ones.
+ *
+ * The result is checked for self-intersections exactly
+ * (`Polygon_mesh_processing::self_intersections()`).  Where a wall or a gap
+ * is thinner than `edge_length`, a vertex projected back onto the surface
+ * can land through the other sheet; then the remeshing runs again from the
+ * input with the input's faces within an edge length of there kept as they
+ * are, and after 4 such runs the mesh is left as it was
+ * (`Post_processing_statistics::reverted`, with a warning).
  *
  * \param mesh the closed triangle mesh, remeshed in place
  * \param edge_length the target edge length (for a CSG result, about the
@@ -49,17 +60,20 @@ namespace Boolean_isosurfacing {
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
+ * \returns what was done (the runs, the frozen faces, whether the mesh was
+ *          left as it was).
  * \throws Invalid_input_error if `edge_length` is not positive and finite or
  *         the mesh is not a closed triangle mesh.
  */
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-void remesh_keeping_creases(TriangleMesh& mesh, double edge_length,
-                            const NamedParameters& np = CGAL::parameters::default_values())
+Post_processing_statistics remesh_keeping_creases(TriangleMesh& mesh, double edge_length,
+                                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   if(!(edge_length > 0 && std::isfinite(edge_length)))
     throw Invalid_input_error("remesh_keeping_creases: the edge length must be positive and finite, got " +
                               std::to_string(edge_length));
@@ -70,10 +84,27 @@ void remesh_keeping_creases(TriangleMesh& mesh, double edge_length,
   const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained), no_crease);
   const auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained), no_corner);
   const unsigned int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5u);
-  CGAL::Polygon_mesh_processing::isotropic_remeshing(
-      faces(mesh), edge_length, mesh,
-      CGAL::parameters::edge_is_constrained_map(ecm).vertex_is_constrained_map(vcm).number_of_iterations(
-          iterations).protect_constraints(false));
+  const auto process = [&](TriangleMesh& work, auto crease, auto corner,
+                           const std::vector<face_descriptor>& frozen) -> std::size_t {
+    auto is_frozen = get(CGAL::dynamic_face_property_t<bool>(), work);
+    for(const face_descriptor f : faces(work))
+      put(is_frozen, f, false);
+    for(const face_descriptor f : frozen)
+      put(is_frozen, f, true);
+    std::vector<face_descriptor> remeshed;
+    for(const face_descriptor f : faces(work))
+      if(!get(is_frozen, f))
+        remeshed.push_back(f);
+    CGAL::Polygon_mesh_processing::isotropic_remeshing(
+        remeshed, edge_length, work,
+        CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner).number_of_iterations(
+            iterations).protect_constraints(false));
+    return 0;
+  };
+  // A result that self-intersects is redone with the input frozen within
+  // an edge length of where it did.
+  return internal::post_process_without_self_intersections(mesh, ecm, vcm, edge_length, "remesh_keeping_creases",
+                                                           process);
 }
 
 } // namespace Boolean_isosurfacing

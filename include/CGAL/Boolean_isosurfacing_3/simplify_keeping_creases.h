@@ -4,7 +4,9 @@
 #ifndef CGAL_BOOLEAN_ISOSURFACING_3_SIMPLIFY_KEEPING_CREASES_H
 #define CGAL_BOOLEAN_ISOSURFACING_3_SIMPLIFY_KEEPING_CREASES_H
 
+#include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/post_process_without_self_intersections.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -202,7 +204,13 @@ private:
  *    crease edges within 1 degree of a line), and crease edges are never
  *    removed otherwise;
  *  - the corners (`vertex_is_constrained_map`): never moved or removed;
- *  - no face normal turns by more than 90 degrees (`Bounded_normal_change_filter`).
+ *  - no face normal turns by more than 90 degrees (`Bounded_normal_change_filter`);
+ *  - no self-intersection: the result is checked exactly
+ *    (`Polygon_mesh_processing::self_intersections()`); where it
+ *    self-intersects (typically at a wall or a gap thinner than a cell), the
+ *    simplification runs again from the input with the input's faces near
+ *    there kept as they are, and after 4 such runs the mesh is left as it was
+ *    (`Post_processing_statistics::reverted`, with a warning).
  * A flat face of the result thus comes back as a few triangles spanning its
  * crease polylines.  Collapses stop when none is allowed.
  *
@@ -216,22 +224,23 @@ private:
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{edge_is_constrained_map}
- *     \cgalParamDescription{the crease edges (`true`)}
- *     \cgalParamType{a `ReadablePropertyMap` from `edge_descriptor` to `bool`} \cgalParamDefault{no crease}
+ *     \cgalParamDescription{the crease edges (`true`); kept up to date on the simplified mesh}
+ *     \cgalParamType{a `ReadWritePropertyMap` from `edge_descriptor` to `bool`} \cgalParamDefault{no crease}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
- *     \cgalParamDescription{the corners (`true`), never moved}
- *     \cgalParamType{a `ReadablePropertyMap` from `vertex_descriptor` to `bool`} \cgalParamDefault{no corner}
+ *     \cgalParamDescription{the corners (`true`), never moved; kept up to date on the simplified mesh}
+ *     \cgalParamType{a `ReadWritePropertyMap` from `vertex_descriptor` to `bool`} \cgalParamDefault{no corner}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
- * \returns the number of edges collapsed.
+ * \returns what was done (`edges_collapsed`, the runs, the frozen faces,
+ *          whether the mesh was left as it was).
  * \throws Invalid_input_error if `max_distance` is not positive and finite or
  *         the mesh is not a closed triangle mesh.
  */
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-std::size_t simplify_keeping_creases(TriangleMesh& mesh, double max_distance,
-                                     const NamedParameters& np = CGAL::parameters::default_values())
+Post_processing_statistics simplify_keeping_creases(TriangleMesh& mesh, double max_distance,
+                                                    const NamedParameters& np = CGAL::parameters::default_values())
 {
   namespace SMS = CGAL::Surface_mesh_simplification;
   using CGAL::parameters::choose_parameter;
@@ -241,6 +250,7 @@ std::size_t simplify_keeping_creases(TriangleMesh& mesh, double max_distance,
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   if(!(max_distance > 0 && std::isfinite(max_distance)))
     throw Invalid_input_error("simplify_keeping_creases: the distance bound must be positive and finite, got " +
                               std::to_string(max_distance));
@@ -252,21 +262,33 @@ std::size_t simplify_keeping_creases(TriangleMesh& mesh, double max_distance,
                                     CGAL::Static_boolean_property_map<vertex_descriptor, false>());
   const double cos_straight = std::cos(1.0 * 3.14159265358979323846 / 180.0); // 1 degree
 
-  typedef SMS::GarlandHeckbert_plane_policies<TriangleMesh, Kernel> Policies;
-  Policies policies(mesh);
-  typedef internal::Crease_keeping_placement<typename Policies::Get_placement, std::remove_const_t<decltype(ecm)>,
-                                             std::remove_const_t<decltype(vcm)>>
-      Placement;
-  const Placement placement(policies.get_placement(), ecm, vcm, cos_straight);
-  // The samples are held to 0.8 of the bound so that the triangles between
-  // them stay within it (measured: two spheres' union at 64 cells came 13 %
-  // over the bound with the samples held to the bound itself).
-  const internal::Sampled_distance_filter<Kernel, SMS::Bounded_normal_change_filter<>> filter(mesh,
-                                                                                             0.8 * max_distance);
-  const SMS::Count_ratio_stop_predicate<TriangleMesh> stop(0.0);
-  const int removed = SMS::edge_collapse(
-      mesh, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement).filter(filter));
-  return std::size_t(removed);
+  const auto process = [&](TriangleMesh& work, auto crease, auto corner,
+                           const std::vector<face_descriptor>& frozen) -> std::size_t {
+    // The corners and the vertices of the frozen faces never move.
+    auto fixed = get(CGAL::dynamic_vertex_property_t<bool>(), work);
+    for(const vertex_descriptor v : vertices(work))
+      put(fixed, v, bool(get(corner, v)));
+    for(const face_descriptor f : frozen)
+      for(const vertex_descriptor v : vertices_around_face(halfedge(f, work), work))
+        put(fixed, v, true);
+    typedef SMS::GarlandHeckbert_plane_policies<TriangleMesh, Kernel> Policies;
+    Policies policies(work);
+    typedef internal::Crease_keeping_placement<typename Policies::Get_placement, decltype(crease), decltype(fixed)>
+        Placement;
+    const Placement placement(policies.get_placement(), crease, fixed, cos_straight);
+    // The samples are held to 0.8 of the bound so that the triangles between
+    // them stay within it (measured: two spheres' union at 64 cells came 13 %
+    // over the bound with the samples held to the bound itself).
+    const internal::Sampled_distance_filter<Kernel, SMS::Bounded_normal_change_filter<>> filter(work,
+                                                                                               0.8 * max_distance);
+    const SMS::Count_ratio_stop_predicate<TriangleMesh> stop(0.0);
+    return std::size_t(SMS::edge_collapse(
+        work, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement).filter(filter)));
+  };
+  // A result that self-intersects is redone with the input frozen within
+  // about a cell (ten bounds) of where it did.
+  return internal::post_process_without_self_intersections(mesh, ecm, vcm, 10 * max_distance,
+                                                           "simplify_keeping_creases", process);
 }
 
 } // namespace Boolean_isosurfacing

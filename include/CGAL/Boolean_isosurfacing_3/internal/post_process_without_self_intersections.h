@@ -1,0 +1,177 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_POST_PROCESS_WITHOUT_SELF_INTERSECTIONS_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_POST_PROCESS_WITHOUT_SELF_INTERSECTIONS_H
+
+#include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/clear_output_mesh.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/tags.h>
+
+#include <chrono>
+#include <cstddef>
+#include <iterator>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+namespace internal {
+
+template <typename TriangleMesh>
+CGAL::Bbox_3 face_bbox(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& mesh)
+{
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  CGAL::Bbox_3 box;
+  for(const auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    box += get(vpm, v).bbox();
+  return box;
+}
+
+/*
+ * Runs `process(work, crease, corner, frozen)` on a copy `work` of `mesh`,
+ * with `crease` and `corner` the copies of `ecm` and `vcm` on it and
+ * `frozen` the faces of `work` the process must leave as they are, and
+ * checks the result with `PMP::self_intersections()` (exact predicates).
+ *
+ * Why: remeshing and simplification move vertices by up to an edge length,
+ * while a CSG result has walls and gaps thinner than a cell (where two
+ * copies graze, a tray's wall): a vertex projected or collapsed there can
+ * land through the other sheet.  Such places are few and small (3-70
+ * intersecting pairs on 10^5 triangles), so instead of testing every move
+ * the whole result is tested once; where it self-intersects, the run is
+ * repeated from the input with the input's faces within `margin` (times the
+ * run's number) of the intersecting faces frozen.  After `max_runs` failed
+ * runs, `mesh` is left as it was.  `mesh` is replaced by the result
+ * otherwise, with `ecm` and `vcm` written for its edges and vertices.
+ *
+ * An input that already self-intersects cannot pass the check: then the
+ * first run's result is kept, with a warning.
+ */
+template <typename TriangleMesh, typename EdgeIsConstrainedMap, typename VertexIsConstrainedMap, typename Process>
+Post_processing_statistics post_process_without_self_intersections(TriangleMesh& mesh, EdgeIsConstrainedMap ecm,
+                                                                   VertexIsConstrainedMap vcm, double margin,
+                                                                   const std::string& name, const Process& process,
+                                                                   std::size_t max_runs = 4)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  typedef boost::graph_traits<TriangleMesh> Traits;
+  typedef typename Traits::vertex_descriptor vertex_descriptor;
+  typedef typename Traits::halfedge_descriptor halfedge_descriptor;
+  typedef typename Traits::face_descriptor face_descriptor;
+  typedef CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor, CGAL::Box_intersection_d::ID_EXPLICIT>
+      Box;
+
+  const auto start = std::chrono::steady_clock::now();
+  Post_processing_statistics statistics;
+  auto input_frozen = get(CGAL::dynamic_face_property_t<bool>(), mesh);
+  for(const face_descriptor f : faces(mesh))
+    put(input_frozen, f, false);
+  std::vector<Box> input_boxes;
+  bool input_checked = false;
+
+  const auto intersecting_faces = [&](const TriangleMesh& m) {
+    const auto check_start = std::chrono::steady_clock::now();
+    std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+    PMP::self_intersections<CGAL::Parallel_if_available_tag>(faces(m), m, std::back_inserter(pairs));
+    statistics.seconds_checks += seconds_since(check_start);
+    return pairs;
+  };
+
+  for(std::size_t run = 1; run <= max_runs; ++run)
+  {
+    statistics.runs = run;
+    TriangleMesh work;
+    std::vector<std::pair<vertex_descriptor, vertex_descriptor>> vertex_pairs;
+    std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> halfedge_pairs;
+    std::vector<std::pair<face_descriptor, face_descriptor>> face_pairs;
+    CGAL::copy_face_graph(mesh, work,
+                          CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(vertex_pairs))
+                              .halfedge_to_halfedge_output_iterator(std::back_inserter(halfedge_pairs))
+                              .face_to_face_output_iterator(std::back_inserter(face_pairs)));
+    auto crease = get(CGAL::dynamic_edge_property_t<bool>(), work);
+    auto corner = get(CGAL::dynamic_vertex_property_t<bool>(), work);
+    for(const auto& p : vertex_pairs)
+      put(corner, p.second, bool(get(vcm, p.first)));
+    for(const auto& p : halfedge_pairs)
+      put(crease, edge(p.second, work), bool(get(ecm, edge(p.first, mesh))));
+    std::vector<face_descriptor> frozen;
+    for(const auto& p : face_pairs)
+      if(get(input_frozen, p.first))
+        frozen.push_back(p.second);
+    statistics.frozen_faces = frozen.size();
+
+    statistics.edges_collapsed = process(work, crease, corner, frozen);
+
+    const auto pairs = intersecting_faces(work);
+    statistics.intersecting_pairs_found += pairs.size();
+    bool keep = pairs.empty();
+    if(!keep && !input_checked)
+    {
+      input_checked = true;
+      if(!intersecting_faces(mesh).empty())
+      {
+        statistics.warnings.push_back(name + ": the input mesh self-intersects, the result is not checked");
+        keep = true;
+      }
+    }
+    if(keep)
+    {
+      vertex_pairs.clear();
+      halfedge_pairs.clear();
+      clear_output_mesh(mesh);
+      CGAL::copy_face_graph(work, mesh,
+                            CGAL::parameters::vertex_to_vertex_output_iterator(std::back_inserter(vertex_pairs))
+                                .halfedge_to_halfedge_output_iterator(std::back_inserter(halfedge_pairs)));
+      for(const auto& p : vertex_pairs)
+        put(vcm, p.second, bool(get(corner, p.first)));
+      for(const auto& p : halfedge_pairs)
+        put(ecm, edge(p.second, mesh), bool(get(crease, edge(p.first, work))));
+      statistics.number_of_vertices = num_vertices(mesh);
+      statistics.number_of_faces = num_faces(mesh);
+      statistics.seconds = seconds_since(start);
+      return statistics;
+    }
+
+    // Freeze the input's faces near the intersecting faces, farther each run.
+    if(input_boxes.empty())
+      for(const face_descriptor f : faces(mesh))
+        input_boxes.emplace_back(face_bbox(f, mesh), f);
+    std::vector<Box> near;
+    const double d = margin * double(run);
+    for(const auto& p : pairs)
+      for(const face_descriptor f : {p.first, p.second})
+      {
+        const CGAL::Bbox_3 b = face_bbox(f, work);
+        near.emplace_back(CGAL::Bbox_3(b.xmin() - d, b.ymin() - d, b.zmin() - d, b.xmax() + d, b.ymax() + d,
+                                       b.zmax() + d),
+                          face_descriptor());
+      }
+    CGAL::box_intersection_d(input_boxes.begin(), input_boxes.end(), near.begin(), near.end(),
+                             [&](const Box& a, const Box&) { put(input_frozen, a.info(), true); });
+  }
+  statistics.reverted = true;
+  statistics.frozen_faces = 0;
+  statistics.edges_collapsed = 0;
+  statistics.warnings.push_back(name + ": every run self-intersected (" + std::to_string(max_runs) +
+                                " runs); the mesh is left as it was");
+  statistics.number_of_vertices = num_vertices(mesh);
+  statistics.number_of_faces = num_faces(mesh);
+  statistics.seconds = seconds_since(start);
+  return statistics;
+}
+
+} // namespace internal
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_POST_PROCESS_WITHOUT_SELF_INTERSECTIONS_H
