@@ -365,7 +365,9 @@ void report_result(Tool& tool, const Result& r)
     tool.stage("post_processing",
                std::string(p.edges_collapsed > 0 ? "simplified" : "post-processed") + " in " +
                    std::to_string(p.runs) + (p.runs == 1 ? " run" : " runs") + " (" +
-                   std::to_string(p.frozen_faces) + " faces kept near self-intersections of earlier runs; checks " +
+                   std::to_string(p.frozen_faces) + " faces kept where earlier runs self-intersected (" +
+                   std::to_string(p.intersecting_pairs_found) + " pairs) or left the input (" +
+                   std::to_string(p.far_input_vertices_found) + " vertices); checks " +
                    std::to_string(p.seconds_checks).substr(0, 5) + " s)",
                p.seconds);
     for(const std::string& w : p.warnings)
@@ -374,6 +376,7 @@ void report_result(Tool& tool, const Result& r)
     post.set("runs", p.runs);
     post.set("frozen_faces", p.frozen_faces);
     post.set("intersecting_pairs_found", p.intersecting_pairs_found);
+    post.set("far_input_vertices_found", p.far_input_vertices_found);
     post.set("reverted", p.reverted);
     post.set("seconds_checks", p.seconds_checks);
     tool.summary().set("post_processing", post);

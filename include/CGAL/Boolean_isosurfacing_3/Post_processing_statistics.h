@@ -29,6 +29,9 @@ struct Post_processing_statistics : Algorithm_statistics
   std::size_t frozen_faces = 0;
   /// Pairs of intersecting faces in the results that were thrown away.
   std::size_t intersecting_pairs_found = 0;
+  /// Input vertices farther than the allowed deviation from the results that
+  /// were thrown away (`remesh_keeping_creases()`).
+  std::size_t far_input_vertices_found = 0;
   /// Whether the mesh was left as it was given (every run self-intersected).
   bool reverted = false;
   /// Edges collapsed by the kept run (`simplify_keeping_creases()`).

@@ -10,9 +10,12 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -20,6 +23,78 @@
 
 namespace CGAL {
 namespace Boolean_isosurfacing {
+namespace internal {
+
+// Flips the side opposite the largest angle of every cap (a triangle with an
+// angle above 160 degrees) where that makes the two triangles' smallest angle
+// larger without folding them: the remeshing can leave such caps where it
+// meets faces it was not given.  Crease edges never flip.  Returns the flips.
+template <typename TriangleMesh, typename EdgeIsConstrainedMap>
+std::size_t flip_caps(TriangleMesh& mesh, EdgeIsConstrainedMap crease)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef std::array<double, 3> V;
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  const auto point = [&](vertex_descriptor v) {
+    const auto& p = get(vpm, v);
+    return V{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  const auto sub = [](const V& a, const V& b) { return V{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
+  const auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const auto cross = [](const V& a, const V& b) {
+    return V{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+  };
+  // The cosine of the angle at a of the triangle abc.
+  const auto cosine = [&](const V& a, const V& b, const V& c) {
+    const V u = sub(b, a), v = sub(c, a);
+    const double l = dot(u, u) * dot(v, v);
+    return l > 0 ? dot(u, v) / std::sqrt(l) : 1.0;
+  };
+  // The cosine of the smallest angle (the largest cosine) of abc.
+  const auto largest_cosine = [&](const V& a, const V& b, const V& c) {
+    return (std::max)({cosine(a, b, c), cosine(b, c, a), cosine(c, a, b)});
+  };
+  const double cap_cosine = std::cos(160.0 * 3.14159265358979323846 / 180.0);
+  std::size_t flips = 0;
+  std::vector<halfedge_descriptor> candidates;
+  for(const auto f : faces(mesh))
+  {
+    // The side opposite an angle above 160 degrees.
+    halfedge_descriptor h = halfedge(f, mesh);
+    for(int k = 0; k < 3; ++k, h = next(h, mesh))
+    {
+      const V a = point(source(h, mesh)), b = point(target(h, mesh)), c = point(target(next(h, mesh), mesh));
+      if(cosine(c, a, b) < cap_cosine)
+        candidates.push_back(h);
+    }
+  }
+  for(const halfedge_descriptor h : candidates)
+  {
+    if(face(h, mesh) == boost::graph_traits<TriangleMesh>::null_face() || is_border(opposite(h, mesh), mesh) ||
+       get(crease, edge(h, mesh)))
+      continue;
+    const vertex_descriptor va = source(h, mesh), vb = target(h, mesh), vc = target(next(h, mesh), mesh),
+                            vd = target(next(opposite(h, mesh), mesh), mesh);
+    if(vc == vd || halfedge(vc, vd, mesh).second)
+      continue;
+    const V a = point(va), b = point(vb), c = point(vc), d = point(vd);
+    if(!(cosine(c, a, b) < cap_cosine)) // an earlier flip changed it
+      continue;
+    const double before = (std::max)(largest_cosine(a, b, c), largest_cosine(b, a, d));
+    const double after = (std::max)(largest_cosine(a, d, c), largest_cosine(d, b, c));
+    const V p = cross(sub(b, a), sub(c, a)), q = cross(sub(a, b), sub(d, b));
+    const V old_normal{{p[0] + q[0], p[1] + q[1], p[2] + q[2]}};
+    if(!(after < before) || !(dot(cross(sub(d, a), sub(c, a)), old_normal) > 0) ||
+       !(dot(cross(sub(b, d), sub(c, d)), old_normal) > 0))
+      continue;
+    CGAL::Euler::flip_edge(h, mesh);
+    ++flips;
+  }
+  return flips;
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref
@@ -33,12 +108,15 @@ namespace Boolean_isosurfacing {
  * gives triangles of every shape; this gives nearly equilateral ones.
  *
  * The result is checked for self-intersections exactly
- * (`Polygon_mesh_processing::self_intersections()`).  Where a wall or a gap
- * is thinner than `edge_length`, a vertex projected back onto the surface
- * can land through the other sheet; then the remeshing runs again from the
- * input with the input's faces within an edge length of there kept as they
- * are, and after 4 such runs the mesh is left as it was
- * (`Post_processing_statistics::reverted`, with a warning).
+ * (`Polygon_mesh_processing::self_intersections()`), and for a lost part of
+ * the input (an input vertex farther than `edge_length` / 4 from it).  Where
+ * a wall or a gap is thinner than `edge_length`, a vertex projected back
+ * onto the surface can land through the other sheet, and the wall can be
+ * flattened; then the remeshing runs again from the input with the input's
+ * faces within an edge length of there kept as they are, and after 4 such
+ * runs the mesh is left as it was (`Post_processing_statistics::reverted`,
+ * with a warning).  Caps (an angle above 160 degrees) left where the
+ * remeshing meets the kept faces are flipped away where that is valid.
  *
  * \param mesh the closed triangle mesh, remeshed in place
  * \param edge_length the target edge length (for a CSG result, about the
@@ -99,12 +177,18 @@ Post_processing_statistics remesh_keeping_creases(TriangleMesh& mesh, double edg
         remeshed, edge_length, work,
         CGAL::parameters::edge_is_constrained_map(crease).vertex_is_constrained_map(corner).number_of_iterations(
             iterations).protect_constraints(false));
+    internal::flip_caps(work, crease);
     return 0;
   };
   // A result that self-intersects is redone with the input frozen within
   // an edge length of where it did.
-  return internal::post_process_without_self_intersections(mesh, ecm, vcm, edge_length, "remesh_keeping_creases",
-                                                           process);
+  // A result that self-intersects, or that lost a part of the input (an
+  // input vertex farther than a quarter edge from it: a wall thinner than an
+  // edge flattened), is redone with the input frozen within an edge length
+  // of where it did.  (Half an edge let the tray's walls, thinner than that,
+  // lose 2-17 % of the volume.)
+  return internal::post_process_without_self_intersections(mesh, ecm, vcm, edge_length, 0.25 * edge_length,
+                                                           "remesh_keeping_creases", process);
 }
 
 } // namespace Boolean_isosurfacing

@@ -329,7 +329,7 @@ Post_processing_statistics simplify_keeping_creases(TriangleMesh& mesh, double m
   };
   // A result that self-intersects is redone with the input frozen within
   // about a cell (ten bounds) of where it did.
-  return internal::post_process_without_self_intersections(mesh, ecm, vcm, 10 * max_distance,
+  return internal::post_process_without_self_intersections(mesh, ecm, vcm, 10 * max_distance, 0.0,
                                                            "simplify_keeping_creases", process);
 }
 

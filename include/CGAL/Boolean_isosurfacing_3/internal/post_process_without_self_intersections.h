@@ -8,9 +8,13 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/clear_output_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/properties.h>
@@ -37,6 +41,42 @@ CGAL::Bbox_3 face_bbox(typename boost::graph_traits<TriangleMesh>::face_descript
   return box;
 }
 
+// The (point boxes of the) vertices of `input` farther than `max_deviation`
+// from `result`, none if `max_deviation` is 0: where a result lost a part of
+// the input, as a remeshing does with a wall thinner than its edges.
+template <typename TriangleMesh>
+std::vector<CGAL::Bbox_3> far_input_points(const TriangleMesh& input, const TriangleMesh& result, double max_deviation)
+{
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type>::value_type
+      Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  typedef typename Kernel::Triangle_3 Triangle;
+  typedef typename std::vector<Triangle>::const_iterator Iterator;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Iterator>>> Tree;
+  std::vector<CGAL::Bbox_3> far;
+  if(!(max_deviation > 0))
+    return far;
+  const auto vpm = get(CGAL::vertex_point, result);
+  std::vector<Triangle> triangles;
+  for(const auto f : faces(result))
+  {
+    const auto h = halfedge(f, result);
+    triangles.emplace_back(get(vpm, source(h, result)), get(vpm, target(h, result)),
+                           get(vpm, target(next(h, result), result)));
+  }
+  Tree tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+  const double squared = max_deviation * max_deviation;
+  const auto input_vpm = get(CGAL::vertex_point, input);
+  for(const auto v : vertices(input))
+  {
+    const Point& p = get(input_vpm, v);
+    if(CGAL::to_double(tree.squared_distance(p)) > squared)
+      far.push_back(p.bbox());
+  }
+  return far;
+}
+
 /*
  * Runs `process(work, crease, corner, frozen)` on a copy `work` of `mesh`,
  * with `crease` and `corner` the copies of `ecm` and `vcm` on it and
@@ -60,8 +100,8 @@ CGAL::Bbox_3 face_bbox(typename boost::graph_traits<TriangleMesh>::face_descript
 template <typename TriangleMesh, typename EdgeIsConstrainedMap, typename VertexIsConstrainedMap, typename Process>
 Post_processing_statistics post_process_without_self_intersections(TriangleMesh& mesh, EdgeIsConstrainedMap ecm,
                                                                    VertexIsConstrainedMap vcm, double margin,
-                                                                   const std::string& name, const Process& process,
-                                                                   std::size_t max_runs = 4)
+                                                                   double max_deviation, const std::string& name,
+                                                                   const Process& process, std::size_t max_runs = 4)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   typedef boost::graph_traits<TriangleMesh> Traits;
@@ -77,7 +117,7 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
   for(const face_descriptor f : faces(mesh))
     put(input_frozen, f, false);
   std::vector<Box> input_boxes;
-  bool input_checked = false;
+  bool input_checked = false, input_self_intersects = false;
 
   const auto intersecting_faces = [&](const TriangleMesh& m) {
     const auto check_start = std::chrono::steady_clock::now();
@@ -112,19 +152,28 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
 
     statistics.edges_collapsed = process(work, crease, corner, frozen);
 
-    const auto pairs = intersecting_faces(work);
-    statistics.intersecting_pairs_found += pairs.size();
-    bool keep = pairs.empty();
-    if(!keep && !input_checked)
+    std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+    if(!input_self_intersects)
     {
-      input_checked = true;
-      if(!intersecting_faces(mesh).empty())
+      pairs = intersecting_faces(work);
+      if(!pairs.empty() && !input_checked)
       {
-        statistics.warnings.push_back(name + ": the input mesh self-intersects, the result is not checked");
-        keep = true;
+        input_checked = true;
+        if(!intersecting_faces(mesh).empty())
+        {
+          statistics.warnings.push_back(name + ": the input mesh self-intersects, the result is not checked for "
+                                               "self-intersections");
+          input_self_intersects = true;
+          pairs.clear();
+        }
       }
     }
-    if(keep)
+    statistics.intersecting_pairs_found += pairs.size();
+    const auto far_start = std::chrono::steady_clock::now();
+    const auto far = far_input_points(mesh, work, max_deviation);
+    statistics.seconds_checks += seconds_since(far_start);
+    statistics.far_input_vertices_found += far.size();
+    if(pairs.empty() && far.empty())
     {
       vertex_pairs.clear();
       halfedge_pairs.clear();
@@ -148,21 +197,24 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
         input_boxes.emplace_back(face_bbox(f, mesh), f);
     std::vector<Box> near;
     const double d = margin * double(run);
+    const auto grown = [&](const CGAL::Bbox_3& b) {
+      near.emplace_back(
+          CGAL::Bbox_3(b.xmin() - d, b.ymin() - d, b.zmin() - d, b.xmax() + d, b.ymax() + d, b.zmax() + d),
+          face_descriptor());
+    };
     for(const auto& p : pairs)
       for(const face_descriptor f : {p.first, p.second})
-      {
-        const CGAL::Bbox_3 b = face_bbox(f, work);
-        near.emplace_back(CGAL::Bbox_3(b.xmin() - d, b.ymin() - d, b.zmin() - d, b.xmax() + d, b.ymax() + d,
-                                       b.zmax() + d),
-                          face_descriptor());
-      }
+        grown(face_bbox(f, work));
+    for(const CGAL::Bbox_3& b : far)
+      grown(b);
     CGAL::box_intersection_d(input_boxes.begin(), input_boxes.end(), near.begin(), near.end(),
                              [&](const Box& a, const Box&) { put(input_frozen, a.info(), true); });
   }
   statistics.reverted = true;
   statistics.frozen_faces = 0;
   statistics.edges_collapsed = 0;
-  statistics.warnings.push_back(name + ": every run self-intersected (" + std::to_string(max_runs) +
+  statistics.warnings.push_back(name + ": every run self-intersected or left the input farther than " +
+                                std::to_string(max_deviation) + " (" + std::to_string(max_runs) +
                                 " runs); the mesh is left as it was");
   statistics.number_of_vertices = num_vertices(mesh);
   statistics.number_of_faces = num_faces(mesh);
