@@ -81,21 +81,24 @@ std::vector<CGAL::Bbox_3> far_input_points(const TriangleMesh& input, const Tria
  * Runs `process(work, crease, corner, frozen)` on a copy `work` of `mesh`,
  * with `crease` and `corner` the copies of `ecm` and `vcm` on it and
  * `frozen` the faces of `work` the process must leave as they are, and
- * checks the result with `PMP::self_intersections()` (exact predicates).
+ * checks the result: no self-intersection (`PMP::self_intersections()`,
+ * exact predicates) and, if `max_deviation` > 0, no input vertex farther
+ * than `max_deviation` from it.
  *
  * Why: remeshing and simplification move vertices by up to an edge length,
  * while a CSG result has walls and gaps thinner than a cell (where two
  * copies graze, a tray's wall): a vertex projected or collapsed there can
- * land through the other sheet.  Such places are few and small (3-70
- * intersecting pairs on 10^5 triangles), so instead of testing every move
- * the whole result is tested once; where it self-intersects, the run is
- * repeated from the input with the input's faces within `margin` (times the
- * run's number) of the intersecting faces frozen.  After `max_runs` failed
- * runs, `mesh` is left as it was.  `mesh` is replaced by the result
- * otherwise, with `ecm` and `vcm` written for its edges and vertices.
+ * land through the other sheet, or flatten the wall.  Such places are few
+ * and small (3-70 intersecting pairs on 10^5 triangles), so instead of
+ * testing every move the whole result is tested once; where it fails, the
+ * run is repeated from the input with the input's faces within `margin`
+ * (times the run's number) of the intersecting faces and of the far input
+ * vertices frozen.  After `max_runs` failed runs, `mesh` is left as it was.
+ * `mesh` is replaced by the result otherwise, with `ecm` and `vcm` written
+ * for its edges and vertices.
  *
- * An input that already self-intersects cannot pass the check: then the
- * first run's result is kept, with a warning.
+ * An input that already self-intersects cannot pass the first check: then
+ * only the second one is made, with a warning.
  */
 template <typename TriangleMesh, typename EdgeIsConstrainedMap, typename VertexIsConstrainedMap, typename Process>
 Post_processing_statistics post_process_without_self_intersections(TriangleMesh& mesh, EdgeIsConstrainedMap ecm,
@@ -191,7 +194,8 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
       return statistics;
     }
 
-    // Freeze the input's faces near the intersecting faces, farther each run.
+    // Freeze the input's faces near the intersecting faces and the far input
+    // vertices, farther each run.
     if(input_boxes.empty())
       for(const face_descriptor f : faces(mesh))
         input_boxes.emplace_back(face_bbox(f, mesh), f);
@@ -213,9 +217,11 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
   statistics.reverted = true;
   statistics.frozen_faces = 0;
   statistics.edges_collapsed = 0;
-  statistics.warnings.push_back(name + ": every run self-intersected or left the input farther than " +
-                                std::to_string(max_deviation) + " (" + std::to_string(max_runs) +
-                                " runs); the mesh is left as it was");
+  statistics.warnings.push_back(name + ": every run (" + std::to_string(max_runs) + ") self-intersected" +
+                                (max_deviation > 0 ? " or left an input vertex farther than " +
+                                                         std::to_string(max_deviation) + " from the result"
+                                                   : std::string()) +
+                                "; the mesh is left as it was");
   statistics.number_of_vertices = num_vertices(mesh);
   statistics.number_of_faces = num_faces(mesh);
   statistics.seconds = seconds_since(start);
