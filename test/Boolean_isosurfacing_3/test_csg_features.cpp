@@ -1338,6 +1338,15 @@ TEST(CsgPostProcessing, AResultThatLostAPartOfTheInputIsRedone)
   EXPECT_FALSE(s.reverted);
   m.collect_garbage();
   EXPECT_NEAR(PMP::volume(m), volume, 1e-12);
+  // A dent every run: the last result is kept, with a warning.
+  dent.always = true;
+  const auto t = BI::internal::post_process_without_self_intersections(m, crease, corner, 0.1, 0.1, "test", dent);
+  EXPECT_EQ(t.runs, 4u);
+  EXPECT_FALSE(t.reverted);
+  ASSERT_EQ(t.warnings.size(), 1u);
+  EXPECT_NE(t.warnings[0].find("1 input vertices are farther than"), std::string::npos) << t.warnings[0];
+  m.collect_garbage();
+  EXPECT_LT(PMP::volume(m), volume);
 }
 
 TEST(CsgPostProcessing, AResultThatAlwaysSelfIntersectsLeavesTheMeshAsItWas)

@@ -93,9 +93,10 @@ std::vector<CGAL::Bbox_3> far_input_points(const TriangleMesh& input, const Tria
  * testing every move the whole result is tested once; where it fails, the
  * run is repeated from the input with the input's faces within `margin`
  * (times the run's number) of the intersecting faces and of the far input
- * vertices frozen.  After `max_runs` failed runs, `mesh` is left as it was.
- * `mesh` is replaced by the result otherwise, with `ecm` and `vcm` written
- * for its edges and vertices.
+ * vertices frozen.  After `max_runs` failed runs, `mesh` is left as it was
+ * if the last result still self-intersects, and replaced by it with a
+ * warning if it only left input vertices far.  `mesh` is replaced by the
+ * result otherwise, with `ecm` and `vcm` written for its edges and vertices.
  *
  * An input that already self-intersects cannot pass the first check: then
  * only the second one is made, with a warning.
@@ -176,8 +177,15 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
     const auto far = far_input_points(mesh, work, max_deviation);
     statistics.seconds_checks += seconds_since(far_start);
     statistics.far_input_vertices_found += far.size();
-    if(pairs.empty() && far.empty())
+    // The last run's result is kept without self-intersection even if it
+    // left input vertices far: the caller is told where, not refused.
+    if(pairs.empty() && (far.empty() || run == max_runs))
     {
+      if(!far.empty())
+        statistics.warnings.push_back(name + ": " + std::to_string(far.size()) +
+                                      " input vertices are farther than " + std::to_string(max_deviation) +
+                                      " from the result (a wall thinner than that flattened, or a sharp tip "
+                                      "rounded off) after " + std::to_string(run) + " runs");
       vertex_pairs.clear();
       halfedge_pairs.clear();
       clear_output_mesh(mesh);
