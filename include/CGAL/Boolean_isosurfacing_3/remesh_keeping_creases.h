@@ -6,6 +6,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Sliver_flips.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/post_process_without_self_intersections.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -15,7 +16,6 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -34,26 +34,18 @@ std::size_t flip_caps(TriangleMesh& mesh, EdgeIsConstrainedMap crease)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  typedef std::array<double, 3> V;
+  namespace MC = Marching_cubes_csg;
+  typedef MC::Vector_3d V;
   const auto vpm = get(CGAL::vertex_point, mesh);
   const auto point = [&](vertex_descriptor v) {
     const auto& p = get(vpm, v);
     return V{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
   };
-  const auto sub = [](const V& a, const V& b) { return V{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
-  const auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  const auto cross = [](const V& a, const V& b) {
-    return V{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-  };
   // The cosine of the angle at a of the triangle abc.
-  const auto cosine = [&](const V& a, const V& b, const V& c) {
-    const V u = sub(b, a), v = sub(c, a);
-    const double l = dot(u, u) * dot(v, v);
-    return l > 0 ? dot(u, v) / std::sqrt(l) : 1.0;
-  };
-  // The cosine of the smallest angle (the largest cosine) of abc.
-  const auto largest_cosine = [&](const V& a, const V& b, const V& c) {
-    return (std::max)({cosine(a, b, c), cosine(b, c, a), cosine(c, a, b)});
+  const auto cosine = [](const V& a, const V& b, const V& c) {
+    const V u = MC::sub3(b, a), v = MC::sub3(c, a);
+    const double l = MC::dot3(u, u) * MC::dot3(v, v);
+    return l > 0 ? MC::dot3(u, v) / std::sqrt(l) : 1.0;
   };
   const double cap_cosine = std::cos(160.0 * 3.14159265358979323846 / 180.0);
   std::size_t flips = 0;
@@ -81,12 +73,12 @@ std::size_t flip_caps(TriangleMesh& mesh, EdgeIsConstrainedMap crease)
     const V a = point(va), b = point(vb), c = point(vc), d = point(vd);
     if(!(cosine(c, a, b) < cap_cosine)) // an earlier flip changed it
       continue;
-    const double before = (std::max)(largest_cosine(a, b, c), largest_cosine(b, a, d));
-    const double after = (std::max)(largest_cosine(a, d, c), largest_cosine(d, b, c));
-    const V p = cross(sub(b, a), sub(c, a)), q = cross(sub(a, b), sub(d, b));
+    const double before = (std::max)(MC::largest_cosine(a, b, c), MC::largest_cosine(b, a, d));
+    const double after = (std::max)(MC::largest_cosine(a, d, c), MC::largest_cosine(d, b, c));
+    const V p = MC::cross3(MC::sub3(b, a), MC::sub3(c, a)), q = MC::cross3(MC::sub3(a, b), MC::sub3(d, b));
     const V old_normal{{p[0] + q[0], p[1] + q[1], p[2] + q[2]}};
-    if(!(after < before) || !(dot(cross(sub(d, a), sub(c, a)), old_normal) > 0) ||
-       !(dot(cross(sub(b, d), sub(c, d)), old_normal) > 0))
+    if(!(after < before) || !(MC::dot3(MC::cross3(MC::sub3(d, a), MC::sub3(c, a)), old_normal) > 0) ||
+       !(MC::dot3(MC::cross3(MC::sub3(b, d), MC::sub3(c, d)), old_normal) > 0))
       continue;
     CGAL::Euler::flip_edge(h, mesh);
     ++flips;

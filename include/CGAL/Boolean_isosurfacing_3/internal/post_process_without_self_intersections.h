@@ -13,6 +13,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/box_intersection_d.h>
@@ -30,16 +31,6 @@
 namespace CGAL {
 namespace Boolean_isosurfacing {
 namespace internal {
-
-template <typename TriangleMesh>
-CGAL::Bbox_3 face_bbox(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& mesh)
-{
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  CGAL::Bbox_3 box;
-  for(const auto v : vertices_around_face(halfedge(f, mesh), mesh))
-    box += get(vpm, v).bbox();
-  return box;
-}
 
 // The (point boxes of the) vertices of `input` farther than `max_deviation`
 // from `result`, none if `max_deviation` is 0: where a result lost a part of
@@ -206,7 +197,7 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
     // vertices, farther each run.
     if(input_boxes.empty())
       for(const face_descriptor f : faces(mesh))
-        input_boxes.emplace_back(face_bbox(f, mesh), f);
+        input_boxes.emplace_back(PMP::face_bbox(f, mesh), f);
     std::vector<Box> near;
     const double d = margin * double(run);
     const auto grown = [&](const CGAL::Bbox_3& b) {
@@ -216,7 +207,7 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
     };
     for(const auto& p : pairs)
       for(const face_descriptor f : {p.first, p.second})
-        grown(face_bbox(f, work));
+        grown(PMP::face_bbox(f, work));
     for(const CGAL::Bbox_3& b : far)
       grown(b);
     CGAL::box_intersection_d(input_boxes.begin(), input_boxes.end(), near.begin(), near.end(),
