@@ -41,6 +41,7 @@
   X(feature_angle_t, feature_angle)                   \
   X(sharp_feature_output_t, sharp_feature_output)   \
   X(sliver_edge_length_t, sliver_edge_length)         \
+  X(sharp_edge_angle_t, sharp_edge_angle)             \
   X(resolution_check_t, resolution_check)             \
   X(vertex_point_maps_t, vertex_point_maps)
 
