@@ -190,7 +190,7 @@ Post_processing_statistics remesh_keeping_creases(TriangleMesh& mesh, double edg
     // are told apart from the other sharp edges afterwards.
     // Why: with the creases alone, the first run at 128 cells left 36-1935
     // input vertices of 8 CSG results farther than a quarter edge (fandisk
-    // united with a moved copy: 162 of 178 on edges sharper than 60 degrees
+    // united with a moved copy: 159 of 164 on edges sharper than 60 degrees
     // that are not creases), hence 3-4 runs and their frozen Marching Cubes
     // faces.  50 degrees: 14 runs for the 8 results, against 27 with the
     // creases alone, 13 at 40 degrees (more triangles under 20 degrees on
