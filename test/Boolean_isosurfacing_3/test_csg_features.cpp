@@ -1388,6 +1388,62 @@ TEST(CsgPostProcessing, AnInputThatSelfIntersectsIsProcessedWithAWarning)
 
 // Two triangles over a flat quad, one of them a cap (an angle near 180
 // degrees): flip_caps() flips their common side, unless it is a crease.
+// A 10 x 1 x 1 box whose top is fanned from two opposite corners (needles
+// down to 0.3 degrees), as edge collapses leave a flat CAD face: the flat
+// flips of the simplification turn it into 45-degree triangles, keep the
+// volume, and never flip a constrained edge.
+TEST(CsgPostProcessing, FlatSliversLeftByTheSimplificationAreFlipped)
+{
+  std::vector<Point> points;
+  for(const double z : {1.0, 0.0})
+    for(const double y : {0.0, 1.0})
+      for(int i = 0; i <= 10; ++i)
+        points.emplace_back(i, y, z);
+  // The points' rows: top y = 0, top y = 1, bottom y = 0, bottom y = 1.
+  const auto t0 = [](int i) { return std::size_t(i); };
+  const auto t1 = [](int i) { return std::size_t(11 + i); };
+  const auto b0 = [](int i) { return std::size_t(22 + i); };
+  const auto b1 = [](int i) { return std::size_t(33 + i); };
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for(int i = 0; i < 10; ++i)
+  {
+    triangles.push_back({t0(0), t1(i + 1), t1(i)}); // the top, fanned from (0, 0, 1)
+    triangles.push_back({t0(i), t0(i + 1), t1(10)}); // and from (10, 1, 1)
+    triangles.push_back({b0(i), b1(i), b1(i + 1)});
+    triangles.push_back({b0(i), b1(i + 1), b0(i + 1)});
+    triangles.push_back({b0(i), b0(i + 1), t0(i + 1)});
+    triangles.push_back({b0(i), t0(i + 1), t0(i)});
+    triangles.push_back({b1(i), t1(i + 1), b1(i + 1)});
+    triangles.push_back({b1(i), t1(i), t1(i + 1)});
+  }
+  triangles.push_back({b0(0), t0(0), t1(0)});
+  triangles.push_back({b0(0), t1(0), b1(0)});
+  triangles.push_back({b0(10), b1(10), t1(10)});
+  triangles.push_back({b0(10), t1(10), t0(10)});
+  for(const bool constrained : {false, true})
+  {
+    Mesh m;
+    PMP::polygon_soup_to_polygon_mesh(points, triangles, m);
+    ASSERT_TRUE(BI::test::is_closed_triangle_mesh(m));
+    ASSERT_NEAR(PMP::volume(m), 10.0, 1e-12);
+    auto crease = m.add_property_map<Mesh::Edge_index, bool>("e:crease", constrained).first;
+    auto frozen = m.add_property_map<Mesh::Face_index, bool>("f:frozen", false).first;
+    const double before = smallest_angle_degrees(m);
+    const std::size_t flips = BI::internal::flip_flat_slivers(m, crease, frozen, 1e-9);
+    const double after = smallest_angle_degrees(m);
+    std::cout << "fanned box top" << (constrained ? ", every edge constrained" : "") << ": smallest angle " << before
+              << " -> " << after << " degrees, " << flips << " flips\n";
+    EXPECT_LT(before, 1.0);
+    if(constrained)
+      EXPECT_EQ(flips, 0u);
+    else
+      EXPECT_GE(after, 45.0 - 1e-9);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+    EXPECT_TRUE(BI::test::is_closed_triangle_mesh(m));
+    EXPECT_NEAR(PMP::volume(m), 10.0, 1e-12);
+  }
+}
+
 TEST(CsgPostProcessing, CapsLeftByTheRemeshingAreFlipped)
 {
   for(const bool crease_side : {false, true})
