@@ -6,14 +6,13 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Sliver_flips.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/angle_raising_flips.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/post_process_without_self_intersections.h>
 #include <CGAL/Boolean_isosurfacing_3/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/property_map.h>
@@ -26,71 +25,6 @@
 
 namespace CGAL {
 namespace Boolean_isosurfacing {
-namespace internal {
-
-// Flips the side opposite the largest angle of every cap (a triangle with an
-// angle above 160 degrees) where that makes the two triangles' smallest angle
-// larger without folding them: the remeshing can leave such caps where it
-// meets faces it was not given.  Constrained edges never flip.  Returns the
-// flips.
-template <typename TriangleMesh, typename EdgeIsConstrainedMap>
-std::size_t flip_caps(TriangleMesh& mesh, EdgeIsConstrainedMap constrained)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  namespace MC = Marching_cubes_csg;
-  typedef MC::Vector_3d V;
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  const auto point = [&](vertex_descriptor v) {
-    const auto& p = get(vpm, v);
-    return V{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  };
-  // The cosine of the angle at a of the triangle abc.
-  const auto cosine = [](const V& a, const V& b, const V& c) {
-    const V u = MC::sub3(b, a), v = MC::sub3(c, a);
-    const double l = MC::dot3(u, u) * MC::dot3(v, v);
-    return l > 0 ? MC::dot3(u, v) / std::sqrt(l) : 1.0;
-  };
-  const double cap_cosine = std::cos(160.0 * 3.14159265358979323846 / 180.0);
-  std::size_t flips = 0;
-  std::vector<halfedge_descriptor> candidates;
-  for(const auto f : faces(mesh))
-  {
-    // The side opposite an angle above 160 degrees.
-    halfedge_descriptor h = halfedge(f, mesh);
-    for(int k = 0; k < 3; ++k, h = next(h, mesh))
-    {
-      const V a = point(source(h, mesh)), b = point(target(h, mesh)), c = point(target(next(h, mesh), mesh));
-      if(cosine(c, a, b) < cap_cosine)
-        candidates.push_back(h);
-    }
-  }
-  for(const halfedge_descriptor h : candidates)
-  {
-    if(face(h, mesh) == boost::graph_traits<TriangleMesh>::null_face() || is_border(opposite(h, mesh), mesh) ||
-       get(constrained, edge(h, mesh)))
-      continue;
-    const vertex_descriptor va = source(h, mesh), vb = target(h, mesh), vc = target(next(h, mesh), mesh),
-                            vd = target(next(opposite(h, mesh), mesh), mesh);
-    if(vc == vd || halfedge(vc, vd, mesh).second)
-      continue;
-    const V a = point(va), b = point(vb), c = point(vc), d = point(vd);
-    if(!(cosine(c, a, b) < cap_cosine)) // an earlier flip changed it
-      continue;
-    const double before = (std::max)(MC::largest_cosine(a, b, c), MC::largest_cosine(b, a, d));
-    const double after = (std::max)(MC::largest_cosine(a, d, c), MC::largest_cosine(d, b, c));
-    const V p = MC::cross3(MC::sub3(b, a), MC::sub3(c, a)), q = MC::cross3(MC::sub3(a, b), MC::sub3(d, b));
-    const V old_normal{{p[0] + q[0], p[1] + q[1], p[2] + q[2]}};
-    if(!(after < before) || !(MC::dot3(MC::cross3(MC::sub3(d, a), MC::sub3(c, a)), old_normal) > 0) ||
-       !(MC::dot3(MC::cross3(MC::sub3(b, d), MC::sub3(c, d)), old_normal) > 0))
-      continue;
-    CGAL::Euler::flip_edge(h, mesh);
-    ++flips;
-  }
-  return flips;
-}
-
-} // namespace internal
 
 /*!
  * \ingroup PkgBooleanIsosurfacing3Ref

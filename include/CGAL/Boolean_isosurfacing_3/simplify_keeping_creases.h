@@ -6,7 +6,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Sliver_flips.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/angle_raising_flips.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/post_process_without_self_intersections.h>
 
 #include <CGAL/AABB_traits.h>
@@ -18,7 +18,6 @@
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_ratio_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
@@ -27,7 +26,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -228,69 +226,6 @@ private:
   double m_squared;
   BaseFilter m_base;
 };
-
-// Flips the edges between two nearly coplanar triangles where that raises
-// their smallest angle (Lawson's flips, restricted to flat pairs): edge
-// collapses leave a flat face of a CAD result as needles fanned from its
-// corners, which the flips turn into its Delaunay triangulation.  An edge
-// flips only if each of the two triangles' far vertices is within
-// `max_height` of the other triangle's plane (so the surface moves by at
-// most that), the flipped triangles keep the orientation, and the edge is
-// not constrained and touches no face with `is_frozen` set.  Returns the
-// flips.
-template <typename TriangleMesh, typename EdgeIsConstrainedMap, typename FaceIsFrozenMap>
-std::size_t flip_flat_slivers(TriangleMesh& mesh, EdgeIsConstrainedMap constrained, FaceIsFrozenMap is_frozen,
-                              double max_height)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  namespace MC = Marching_cubes_csg;
-  typedef MC::Vector_3d V;
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  const auto point = [&](vertex_descriptor v) {
-    const auto& p = get(vpm, v);
-    return V{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  };
-  // Whether d is within max_height of the plane of abc (n its normal).
-  const auto near_plane = [&](const V& a, const V& n, const V& d) {
-    const double h = MC::dot3(MC::sub3(d, a), n);
-    return h * h <= max_height * max_height * MC::dot3(n, n);
-  };
-  std::deque<edge_descriptor> queue(edges(mesh).first, edges(mesh).second);
-  std::size_t flips = 0;
-  const std::size_t max_flips = 10 * num_edges(mesh);
-  while(!queue.empty() && flips < max_flips)
-  {
-    const edge_descriptor e = queue.front();
-    queue.pop_front();
-    const halfedge_descriptor h = halfedge(e, mesh), o = opposite(h, mesh);
-    if(is_border_edge(h, mesh) || get(constrained, e) || get(is_frozen, face(h, mesh)) ||
-       get(is_frozen, face(o, mesh)))
-      continue;
-    const vertex_descriptor va = source(h, mesh), vb = target(h, mesh), vc = target(next(h, mesh), mesh),
-                            vd = target(next(o, mesh), mesh);
-    if(vc == vd || halfedge(vc, vd, mesh).second)
-      continue;
-    const V a = point(va), b = point(vb), c = point(vc), d = point(vd);
-    const V n_abc = MC::cross3(MC::sub3(b, a), MC::sub3(c, a)), n_bad = MC::cross3(MC::sub3(a, b), MC::sub3(d, b));
-    if(!near_plane(a, n_abc, d) || !near_plane(b, n_bad, c))
-      continue;
-    const double before = (std::max)(MC::largest_cosine(a, b, c), MC::largest_cosine(b, a, d));
-    const double after = (std::max)(MC::largest_cosine(a, d, c), MC::largest_cosine(d, b, c));
-    const V old_normal{{n_abc[0] + n_bad[0], n_abc[1] + n_bad[1], n_abc[2] + n_bad[2]}};
-    // A strict gain, so that the flips end.
-    if(!(after < before - 1e-12) || !(MC::dot3(MC::cross3(MC::sub3(d, a), MC::sub3(c, a)), old_normal) > 0) ||
-       !(MC::dot3(MC::cross3(MC::sub3(b, d), MC::sub3(c, d)), old_normal) > 0))
-      continue;
-    CGAL::Euler::flip_edge(h, mesh);
-    ++flips;
-    for(const halfedge_descriptor g : {next(h, mesh), prev(h, mesh), next(opposite(h, mesh), mesh),
-                                       prev(opposite(h, mesh), mesh)})
-      queue.push_back(edge(g, mesh));
-  }
-  return flips;
-}
 
 } // namespace internal
 
