@@ -182,6 +182,22 @@ side_by_side "$fig/csg_pairs.png" \
   "$work/organic_union.png" "sphere | torus" \
   "$work/organic_difference.png" "sphere & !torus"
 
+echo "== csg: plate minus pin post-processed (--remesh, --simplify)"
+# The same pair at 48 cells, with the triangles drawn: as extracted, remeshed
+# (edges of r, the creases and the other sharp edges kept) and simplified
+# (0.1 r, then flat pairs flipped).
+for mode in plain remesh simplify; do
+  flag=(); [[ $mode != plain ]] && flag=(--$mode)
+  "$tools/csg" "$work/plate.off" "$work/pin.off" --op difference --cells 48 "${flag[@]}" \
+    -o "$work/post_$mode.off" --creases "$work/post_${mode}_creases.txt"
+  render "$work/post_$mode.off" "$work/post_$mode.png" --view 35,-60 --size 4 --zoom 2.4 --edges \
+    --creases "$work/post_${mode}_creases.txt"
+done
+side_by_side "$fig/csg_post_processing.png" \
+  "$work/post_plain.png" "extracted (48 cells)" \
+  "$work/post_remesh.png" "--remesh" \
+  "$work/post_simplify.png" "--simplify"
+
 # ---- contouring a point set ---------------------------------------------------
 echo "== contour: peanut samples"
 "$tools/contour" "$work/peanut.pts" -o "$work/peanut.off"
