@@ -1260,18 +1260,17 @@ struct Pull_top_through
 {
   bool always = false;
   Point target = Point(0.01, 0.02, -2);
-  template <typename Crease, typename Corner>
-  std::size_t operator()(Mesh& work, Crease, Corner, const std::vector<Mesh::Face_index>& frozen) const
+  template <typename Crease, typename Corner, typename IsFrozen>
+  std::size_t operator()(Mesh& work, Crease, Corner, IsFrozen is_frozen) const
   {
     Mesh::Vertex_index top = *vertices(work).begin();
     for(auto v : vertices(work))
       if(work.point(v).z() > work.point(top).z())
         top = v;
     if(!always)
-      for(auto f : frozen)
-        for(auto v : vertices_around_face(halfedge(f, work), work))
-          if(v == top)
-            return 0;
+      for(auto f : faces_around_target(halfedge(top, work), work))
+        if(get(is_frozen, f))
+          return 0;
     work.point(top) = target;
     return 1;
   }
@@ -1379,7 +1378,7 @@ TEST(CsgPostProcessing, AnInputThatSelfIntersectsIsProcessedWithAWarning)
   CGAL::Static_boolean_property_map<Mesh::Vertex_index, false> no_corner;
   const auto s = BI::internal::post_process_without_self_intersections(
       m, no_crease, no_corner, 0.1, 0.0, "test",
-      [](Mesh&, auto, auto, const std::vector<Mesh::Face_index>&) { return std::size_t(0); });
+      [](Mesh&, auto, auto, auto) { return std::size_t(0); });
   EXPECT_EQ(s.runs, 1u);
   EXPECT_FALSE(s.reverted);
   ASSERT_EQ(s.warnings.size(), 1u);

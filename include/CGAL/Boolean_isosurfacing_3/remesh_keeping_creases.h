@@ -108,13 +108,7 @@ Post_processing_statistics remesh_keeping_creases(TriangleMesh& mesh, double edg
   if(!(sharp_edge_angle >= 0 && sharp_edge_angle <= 180))
     throw Invalid_input_error("remesh_keeping_creases: the sharp edge angle must be in [0, 180] degrees, got " +
                               std::to_string(sharp_edge_angle));
-  const auto process = [&](TriangleMesh& work, auto crease, auto corner,
-                           const std::vector<face_descriptor>& frozen) -> std::size_t {
-    auto is_frozen = get(CGAL::dynamic_face_property_t<bool>(), work);
-    for(const face_descriptor f : faces(work))
-      put(is_frozen, f, false);
-    for(const face_descriptor f : frozen)
-      put(is_frozen, f, true);
+  const auto process = [&](TriangleMesh& work, auto crease, auto corner, auto is_frozen) -> std::size_t {
     std::vector<face_descriptor> remeshed;
     for(const face_descriptor f : faces(work))
       if(!get(is_frozen, f))

@@ -308,15 +308,15 @@ Post_processing_statistics simplify_keeping_creases(TriangleMesh& mesh, double m
                                     CGAL::Static_boolean_property_map<vertex_descriptor, false>());
   const double cos_straight = std::cos(1.0 * 3.14159265358979323846 / 180.0); // 1 degree
 
-  const auto process = [&](TriangleMesh& work, auto crease, auto corner,
-                           const std::vector<face_descriptor>& frozen) -> std::size_t {
+  const auto process = [&](TriangleMesh& work, auto crease, auto corner, auto is_frozen) -> std::size_t {
     // The corners and the vertices of the frozen faces never move.
     auto fixed = get(CGAL::dynamic_vertex_property_t<bool>(), work);
     for(const vertex_descriptor v : vertices(work))
       put(fixed, v, bool(get(corner, v)));
-    for(const face_descriptor f : frozen)
-      for(const vertex_descriptor v : vertices_around_face(halfedge(f, work), work))
-        put(fixed, v, true);
+    for(const face_descriptor f : faces(work))
+      if(get(is_frozen, f))
+        for(const vertex_descriptor v : vertices_around_face(halfedge(f, work), work))
+          put(fixed, v, true);
     typedef SMS::GarlandHeckbert_plane_policies<TriangleMesh, Kernel> Policies;
     Policies policies(work);
     typedef internal::Crease_keeping_placement<typename Policies::Get_placement, decltype(crease), decltype(fixed)>
@@ -330,11 +330,6 @@ Post_processing_statistics simplify_keeping_creases(TriangleMesh& mesh, double m
     const SMS::Count_ratio_stop_predicate<TriangleMesh> stop(0.0);
     const std::size_t collapsed = std::size_t(SMS::edge_collapse(
         work, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement).filter(filter)));
-    auto is_frozen = get(CGAL::dynamic_face_property_t<bool>(), work);
-    for(const face_descriptor f : faces(work))
-      put(is_frozen, f, false);
-    for(const face_descriptor f : frozen)
-      put(is_frozen, f, true);
     internal::flip_flat_slivers(work, crease, is_frozen, 0.1 * max_distance);
     return collapsed;
   };

@@ -51,9 +51,8 @@ inline bool flip_raises_smallest_angle(const Marching_cubes_csg::Vector_3d& a, c
          MC::dot3(MC::cross3(MC::sub3(b, d), MC::sub3(c, d)), old_normal) > 0;
 }
 
-// The far vertices c and d of the two faces on the edge of `h` (c on h's
-// side), if the edge can flip: not constrained, not on a border, and cd not
-// already an edge.
+// Whether the edge of `h` can flip: not constrained, not on a border, and
+// the edge joining the two faces' far vertices not already there.
 template <typename TriangleMesh, typename EdgeIsConstrainedMap>
 bool flippable(const TriangleMesh& mesh, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
                EdgeIsConstrainedMap constrained)

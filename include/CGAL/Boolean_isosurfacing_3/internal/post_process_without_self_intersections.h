@@ -69,9 +69,10 @@ std::vector<CGAL::Bbox_3> far_input_points(const TriangleMesh& input, const Tria
 }
 
 /*
- * Runs `process(work, crease, corner, frozen)` on a copy `work` of `mesh`,
- * with `crease` and `corner` the copies of `ecm` and `vcm` on it and
- * `frozen` the faces of `work` the process must leave as they are, and
+ * Runs `process(work, crease, corner, is_frozen)` on a copy `work` of
+ * `mesh`, with `crease` and `corner` the copies of `ecm` and `vcm` on it and
+ * `is_frozen` a face property map of `work`, true for the faces the process
+ * must leave as they are, and
  * checks the result: no self-intersection (`PMP::self_intersections()`,
  * exact predicates) and, if `max_deviation` > 0, no input vertex farther
  * than `max_deviation` from it.
@@ -139,13 +140,15 @@ Post_processing_statistics post_process_without_self_intersections(TriangleMesh&
       put(corner, p.second, bool(get(vcm, p.first)));
     for(const auto& p : halfedge_pairs)
       put(crease, edge(p.second, work), bool(get(ecm, edge(p.first, mesh))));
-    std::vector<face_descriptor> frozen;
+    auto is_frozen = get(CGAL::dynamic_face_property_t<bool>(), work);
+    statistics.frozen_faces = 0;
     for(const auto& p : face_pairs)
-      if(get(input_frozen, p.first))
-        frozen.push_back(p.second);
-    statistics.frozen_faces = frozen.size();
+    {
+      put(is_frozen, p.second, bool(get(input_frozen, p.first)));
+      statistics.frozen_faces += get(input_frozen, p.first);
+    }
 
-    statistics.edges_collapsed = process(work, crease, corner, frozen);
+    statistics.edges_collapsed = process(work, crease, corner, is_frozen);
 
     std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
     if(!input_self_intersects)
