@@ -1570,13 +1570,51 @@ TEST(CsgPostProcessing, RemeshingKeepsUnmarkedSharpEdges)
     const std::vector<Segment> remeshed_creases = marked_creases(r);
     const Distances d = sample_distances(samples_of(remeshed_creases, r.spacing), creases, r.spacing);
     std::cout << "tray | copy at 48 cells remeshed: " << sharp_not_creases << " sharp edges besides the "
-              << creases.size() << " crease edges, " << s.runs << " runs; " << remeshed_creases.size()
+              << creases.size() << " crease edges, " << s.runs << " runs, " << s.far_input_vertices_found
+              << " far input vertices; " << remeshed_creases.size()
               << " crease edges after, " << d.max << " r from the creases before\n";
     EXPECT_GT(sharp_not_creases, 0u);
     EXPECT_FALSE(remeshed_creases.empty());
     EXPECT_LT(d.max, 0.1);
     EXPECT_TRUE(BI::test::is_closed_triangle_mesh(r.mesh));
     EXPECT_FALSE(PMP::does_self_intersect(r.mesh));
+  }
+  {
+    // A flat hexagonal pyramid: the rim of its base is a sharp polyline
+    // that turns by 60 degrees at each corner, with vertices 6 % of a side
+    // from the corners.  The remeshing collapses those short edges along the
+    // polyline; the corners, where it bends, stay where they are.
+    std::vector<Point> points{Point(0, 0, 0), Point(0, 0, 0.2)};
+    std::vector<Point> corners;
+    for(int k = 0; k < 6; ++k)
+      corners.emplace_back(std::cos(k * CGAL_PI / 3), std::sin(k * CGAL_PI / 3), 0);
+    for(int k = 0; k < 6; ++k)
+      for(const double t : {0.0, 0.06, 0.94})
+        points.push_back(CGAL::barycenter(corners[k], 1 - t, corners[(k + 1) % 6], t));
+    std::vector<std::array<std::size_t, 3>> triangles;
+    const std::size_t n = points.size() - 2;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t a = 2 + i, b = 2 + (i + 1) % n;
+      triangles.push_back({0, b, a});
+      triangles.push_back({a, b, 1});
+    }
+    Mesh pyramid;
+    PMP::polygon_soup_to_polygon_mesh(points, triangles, pyramid);
+    ASSERT_TRUE(BI::test::is_closed_triangle_mesh(pyramid));
+    ASSERT_GT(PMP::volume(pyramid), 0);
+    const BI::Post_processing_statistics s = BI::remesh_keeping_creases(pyramid, 0.3);
+    pyramid.collect_garbage();
+    std::size_t corners_kept = 0;
+    for(const Point& c : corners)
+      corners_kept += std::any_of(pyramid.points().begin(), pyramid.points().end(),
+                                  [&](const Point& p) { return p == c; });
+    std::cout << "flat hexagonal pyramid remeshed: " << corners_kept << " of 6 rim corners kept, " << s.runs
+              << " runs, " << pyramid.number_of_faces() << " triangles\n";
+    EXPECT_EQ(corners_kept, 6u);
+    EXPECT_EQ(s.runs, 1u);
+    EXPECT_TRUE(BI::test::is_closed_triangle_mesh(pyramid));
+    EXPECT_FALSE(PMP::does_self_intersect(pyramid));
   }
   Csg_mesh r = csg_mesh({make_box(Point(0, 0, 0), Point(1, 1, 1))}, "A", 8);
   EXPECT_THROW(BI::remesh_keeping_creases(r.mesh, r.spacing, BI::parameters::sharp_edge_angle(-1.0)),
