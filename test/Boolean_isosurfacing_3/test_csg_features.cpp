@@ -1232,6 +1232,40 @@ TEST(CsgCompactOutput, OrganicResultShrinksWithinTheBound)
   EXPECT_THROW(BI::simplify_keeping_creases(r.mesh, 0.0), BI::Invalid_input_error);
 }
 
+// Fandisk minus a moved copy at 64 cells: collapses took the simplified
+// surface 1.17 r (11.7 bounds) away from a thin wedge of the extracted one
+// while every moved triangle's samples stayed within the bound; the check of
+// the input vertices at two bounds redoes the simplification with the faces
+// there frozen.  Both one-sided distances are CGAL's certified ones
+// (bounded_error_Hausdorff_distance(), to 0.001 r).
+TEST(CsgCompactOutput, SimplificationKeepsThinPartsOfTheInput)
+{
+  Mesh fandisk;
+  BI::IO::read_closed_triangle_mesh(std::string(BISO_SHARED_DATA_DIR) + "/meshes/fandisk.off", fandisk);
+  Csg_mesh r = csg_mesh({fandisk, BI::test::moved_copy(fandisk)}, "A & !B", 64);
+  const Mesh extracted = r.mesh;
+  const double bound = 0.1 * r.spacing;
+  const BI::Post_processing_statistics s = BI::simplify_keeping_creases(
+      r.mesh, bound, CGAL::parameters::edge_is_constrained_map(r.crease).vertex_is_constrained_map(r.corner));
+  r.mesh.collect_garbage();
+  const double lost =
+      PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(extracted, r.mesh, 0.001 * r.spacing);
+  const double strayed =
+      PMP::bounded_error_Hausdorff_distance<CGAL::Sequential_tag>(r.mesh, extracted, 0.001 * r.spacing);
+  std::cout << "fandisk - copy at 64 cells simplified: " << extracted.number_of_faces() << " -> "
+            << r.mesh.number_of_faces() << " triangles, " << s.runs << " runs, " << s.far_input_vertices_found
+            << " far input vertices; extracted -> simplified " << lost / bound << " bounds, simplified -> extracted "
+            << strayed / bound << " bounds\n";
+  EXPECT_GT(s.far_input_vertices_found, 0u);
+  EXPECT_LT(lost, 3 * bound);
+  // The sampled bound is not held (a miss, features.md): this asserts what
+  // is measured.
+  EXPECT_LT(strayed, 3 * bound);
+  EXPECT_LT(r.mesh.number_of_faces(), extracted.number_of_faces() / 4);
+  EXPECT_TRUE(BI::test::is_closed_triangle_mesh(r.mesh));
+  EXPECT_FALSE(PMP::does_self_intersect(r.mesh));
+}
+
 TEST(CsgCompactOutput, RemeshingKeepsCreasesAndCorners)
 {
   const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));

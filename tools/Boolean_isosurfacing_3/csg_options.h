@@ -125,8 +125,9 @@ inline void add_options(Tool& tool, Options& o, Option_text& t)
       ->type_name("F");
   app.add_option("--corners", o.corners_file, "write the corners, one 'x y z' line each")->type_name("F");
   app.add_option("--simplify", t.simplify,
-                 "simplify the result by edge collapses keeping its creases and corners, within D cells of the "
-                 "extracted surface (default 0.1)")
+                 "simplify the result by edge collapses keeping its creases and corners: moved triangles within "
+                 "D cells of the extracted surface at 7 samples each, input vertices within 2 D of the result "
+                 "(default 0.1)")
       ->expected(0, 1)
       ->type_name("[D]");
   app.add_option("--remesh", t.remesh,
