@@ -340,6 +340,11 @@ void print_result(std::FILE* out, const Result& r)
                  "%zu feature polygons kept plain, %zu short edges collapsed\n",
                  s.feature_vertices, s.corner_vertices, s.crease_edges, r.creases.polylines.size(),
                  s.plain_feature_polygons, s.collapsed_edges);
+  if(s.weak_fans > 0 || s.extraction_runs > 1)
+    std::fprintf(out,
+                 "  fold tests: %zu fans passed only the weaker test; %zu cubes given the strict test after "
+                 "a check, in %zu extraction runs\n",
+                 s.weak_fans, s.strict_fold_cubes, s.extraction_runs);
   std::fprintf(out,
                "  resolution check: %zu input components, %zu not resolved by the lattice; %zu of %zu result "
                "intervals on lattice lines thinner than a cell (%.3g %% of the volume), %.3g %% in walls "
@@ -392,6 +397,9 @@ void report_result(Tool& tool, const Result& r)
   j.set("feature_vertices", s.feature_vertices);
   j.set("corners", s.corner_vertices);
   j.set("crease_edges", s.crease_edges);
+  j.set("weak_fans", s.weak_fans);
+  j.set("strict_fold_cubes", s.strict_fold_cubes);
+  j.set("extraction_runs", s.extraction_runs);
   j.set("unresolved_components", s.under_resolved_components.size());
   j.set("thin_result_intervals", s.thin_result_intervals);
   j.set("thin_result_percent", thin_result_percent(s));

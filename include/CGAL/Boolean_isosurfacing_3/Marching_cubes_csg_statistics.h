@@ -52,6 +52,13 @@ struct Marching_cubes_csg_statistics : Algorithm_statistics
   std::size_t plain_feature_polygons = 0;
   /// Of `plain_feature_polygons`, those whose fan would have folded.
   std::size_t folded_feature_polygons = 0;
+  /// Fans that only the weaker fold test accepts (features.md, "Fold
+  /// tests") in the output, and the cubes given the strict test because such
+  /// a fan met another triangle (each such finding costs one more run of
+  /// the extraction: `extraction_runs`).
+  std::size_t weak_fans = 0;
+  std::size_t strict_fold_cubes = 0;
+  std::size_t extraction_runs = 1;
   /// Face segments flipped to join the feature vertices of neighbouring cubes.
   std::size_t flipped_edges = 0;
   /// Flipped edges whose dihedral angle is above the feature angle: the output creases.

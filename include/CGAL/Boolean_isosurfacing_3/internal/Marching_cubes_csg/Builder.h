@@ -19,6 +19,7 @@
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Collapse_short_edges.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Resolution_check.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Weak_fan_check.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Release_free_memory.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
@@ -199,6 +200,19 @@ public:
         nz, [&](std::size_t k) { vertices_of_plane(k, points); }, progress);
   }
 
+  // Fans pass the weaker fold test (`Fold_test::SUM`) except in the cubes
+  // `strict_cubes` (ids i + nx (j + ny k), sorted), which must outlive the
+  // builder; weak_fans() then lists the fans only that test accepted.
+  // Without this call every fan passes the strict test.
+  void use_weak_fold_test(const std::vector<std::uint64_t>& strict_cubes)
+  {
+    m_all_strict = false;
+    m_strict_cubes = &strict_cubes;
+  }
+  // (f, cube id), increasing f: the fan of feature vertex f (0 for the
+  // first feature vertex) passed only the weaker fold test.
+  const std::vector<std::array<std::uint64_t, 2>>& weak_fans() const { return m_weak_fans; }
+
   // compute_vertices() will write into `meshes` the input mesh of each edge
   // vertex (the mesh of the crossing it is on); the face labels of the output.
   void record_vertex_meshes(std::vector<std::uint8_t>& meshes) { m_vertex_meshes = &meshes; }
@@ -252,8 +266,13 @@ public:
           },
           progress);
       release_planes();
+      m_weak_fans.clear();
+      std::uint64_t first_of_chunk = 0;
       for(const auto& b : buffers)
       {
+        for(const std::array<std::uint64_t, 2>& w : b.weak_fans)
+          m_weak_fans.push_back({{first_of_chunk + w[0], w[1]}});
+        first_of_chunk += b.feature_points.size();
         statistics.plain_feature_polygons += b.plain.no_point + b.plain.folded;
         statistics.folded_feature_polygons += b.plain.folded;
       }
@@ -853,7 +872,10 @@ private:
       const Vector_3d cube_low{{m_lattice.coordinate(0, i), m_lattice.coordinate(1, j), m_lattice.coordinate(2, k)}};
       const Vector_3d cube_high{
           {m_lattice.coordinate(0, i + 1), m_lattice.coordinate(1, j + 1), m_lattice.coordinate(2, k + 1)}};
-      const Marching_cubes_csg::Feature_decision decide(cube_low, cube_high, m_features, out.plain);
+      const std::uint64_t cube = i + m_n[0] * (j + m_n[1] * std::uint64_t(k));
+      const bool strict =
+          m_all_strict || std::binary_search(m_strict_cubes->begin(), m_strict_cubes->end(), cube);
+      const Marching_cubes_csg::Feature_decision decide(cube_low, cube_high, m_features, out, cube, strict);
       Marching_cubes_csg::triangulate_feature_cube(table, code, vertex_of, points, m_normals, decide, out);
     });
   }
@@ -870,6 +892,9 @@ private:
   Marching_cubes_csg::Edge_vertex_normals m_normals; // of each edge vertex (features only)
   std::vector<std::uint8_t>* m_vertex_meshes = nullptr;
   bool m_empty_state;               // the state of a point inside no mesh
+  bool m_all_strict = true;         // see use_weak_fold_test()
+  const std::vector<std::uint64_t>* m_strict_cubes = nullptr;
+  std::vector<std::array<std::uint64_t, 2>> m_weak_fans;
 };
 
 // The triangles of the input meshes, each read through its map of the
@@ -918,15 +943,19 @@ inline void add_csg_warnings(Marching_cubes_csg_statistics& statistics)
                                   std::to_string(statistics.sparse_result_suggested_spacing) + " would see most");
 }
 
-// Into `points` and `triangles` (arrays of three indices of any integer type
-// that holds the vertex count), both cleared first.
+// One run of marching_cubes_csg_soup(): with sharp features, the fans pass
+// the weaker fold test except in `strict_cubes` (all of them if it is null),
+// and `intersecting_cubes` receives the cubes of the weak fans that meet
+// another triangle of the output.
 template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters, typename Triangle>
-Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& meshes,
-                                                      const Boolean_expression& expression,
-                                                      const Regular_lattice_3& lattice,
-                                                      std::vector<std::array<double, 3>>& points,
-                                                      std::vector<Triangle>& triangles, Csg_features& soup_features,
-                                                      const NamedParameters& np)
+Marching_cubes_csg_statistics marching_cubes_csg_soup_run(const TriangleMeshRange& meshes,
+                                                          const Boolean_expression& expression,
+                                                          const Regular_lattice_3& lattice,
+                                                          std::vector<std::array<double, 3>>& points,
+                                                          std::vector<Triangle>& triangles,
+                                                          Csg_features& soup_features, const NamedParameters& np,
+                                                          const std::vector<std::uint64_t>* strict_cubes,
+                                                          std::vector<std::uint64_t>& intersecting_cubes)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -965,6 +994,8 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
     throw std::logic_error("marching_cubes_csg: crossings inconsistent with the classification (this is a bug)");
 #endif
   Builder builder(classifier, expression, features, tangents);
+  if(strict_cubes != nullptr)
+    builder.use_weak_fold_test(*strict_cubes);
   statistics.boundary_points_inside = builder.compute_states(progress.part(0.6, 0.65));
   statistics.crossings = classifier.number_of_crossings();
   if(check_resolution)
@@ -1023,6 +1054,15 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
       statistics.collapsed_edges = Marching_cubes_csg::collapse_short_edges<ConcurrencyTag>(
           points, work, edge_vertices, sliver * lattice.spacing(), soup_features.crease_edges,
           soup_features.corner_vertices, record_meshes ? &soup_features.vertex_meshes : nullptr);
+    intersecting_cubes.clear();
+    if(features.enabled && strict_cubes != nullptr)
+    {
+      // The feature vertices follow the edge points, in order: the
+      // collapses move and remove edge points only.
+      statistics.weak_fans = builder.weak_fans().size();
+      intersecting_cubes = Marching_cubes_csg::cubes_of_intersecting_weak_fans<ConcurrencyTag>(
+          points, work, points.size() - statistics.feature_vertices, builder.weak_fans(), lattice);
+    }
     if constexpr(std::is_same<Triangle, Work_triangle>::value)
       triangles.swap(work);
     else
@@ -1038,8 +1078,54 @@ Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& m
   statistics.number_of_vertices = points.size();
   statistics.number_of_faces = triangles.size();
   statistics.seconds_triangulation = seconds_since(start);
-  add_csg_warnings(statistics);
   return statistics;
+}
+
+// How many runs may use the weaker fold test; the next one uses the strict
+// test everywhere (the output before the weaker test existed).
+constexpr std::size_t max_weak_fold_runs = 3;
+
+// Into `points` and `triangles` (arrays of three indices of any integer type
+// that holds the vertex count), both cleared first.  With sharp features,
+// the fans pass the weaker fold test, except in the cubes where such a fan
+// met another triangle: there the whole extraction runs again with the
+// strict test (the meshes are read again: the classifier consumed them, and
+// a run on a crossed cube's polygons needs the states and crossings it
+// released).  Deterministic: the cubes found do not depend on the
+// concurrency.
+template <typename ConcurrencyTag, typename TriangleMeshRange, typename NamedParameters, typename Triangle>
+Marching_cubes_csg_statistics marching_cubes_csg_soup(const TriangleMeshRange& meshes,
+                                                      const Boolean_expression& expression,
+                                                      const Regular_lattice_3& lattice,
+                                                      std::vector<std::array<double, 3>>& points,
+                                                      std::vector<Triangle>& triangles, Csg_features& soup_features,
+                                                      const NamedParameters& np)
+{
+  std::vector<std::uint64_t> strict, intersecting;
+  double seconds[3] = {0, 0, 0};
+  for(std::size_t run = 1;; ++run)
+  {
+    Marching_cubes_csg_statistics statistics = marching_cubes_csg_soup_run<ConcurrencyTag>(
+        meshes, expression, lattice, points, triangles, soup_features, np,
+        run <= max_weak_fold_runs ? &strict : nullptr, intersecting);
+    seconds[0] += statistics.seconds_classification;
+    seconds[1] += statistics.seconds_edges;
+    seconds[2] += statistics.seconds_triangulation;
+    if(intersecting.empty())
+    {
+      statistics.extraction_runs = run;
+      statistics.strict_fold_cubes = strict.size();
+      statistics.seconds_classification = seconds[0];
+      statistics.seconds_edges = seconds[1];
+      statistics.seconds_triangulation = seconds[2];
+      add_csg_warnings(statistics);
+      return statistics;
+    }
+    std::vector<std::uint64_t> merged;
+    std::set_union(strict.begin(), strict.end(), intersecting.begin(), intersecting.end(),
+                   std::back_inserter(merged));
+    strict.swap(merged);
+  }
 }
 
 } // namespace internal

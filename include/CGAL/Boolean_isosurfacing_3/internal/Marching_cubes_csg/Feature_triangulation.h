@@ -150,18 +150,24 @@ struct Feature_chunk
   std::vector<Vector_3d> feature_points;
   std::vector<Feature_kind> feature_kinds;
   std::vector<std::size_t> fans; // fan triangles, indices into `triangles`
+  /// The feature points whose fans only the weaker fold test accepts
+  /// (`Fold_test::SUM`), as (index into `feature_points`, cube id), increasing.
+  std::vector<std::array<std::uint64_t, 2>> weak_fans;
   Plain_feature_counts plain;
 };
 
 /// The feature decision of a polygon of the cube [low, high]: its feature
 /// vertex, if it has one and the fan around it does not fold.  Counts the
-/// polygons whose normals disagree but that keep the plain triangulation.
+/// polygons whose normals disagree but that keep the plain triangulation in
+/// `out.plain`.  Unless `strict`, a fan passes the weaker fold test
+/// (`Fold_test::SUM`), and the fans only that test accepts are listed in
+/// `out.weak_fans` with the id of the cube.
 class Feature_decision
 {
 public:
-  Feature_decision(const Vector_3d& low, const Vector_3d& high, const Feature_settings& settings,
-                   Plain_feature_counts& counts)
-    : m_low(low), m_high(high), m_settings(settings), m_counts(counts)
+  Feature_decision(const Vector_3d& low, const Vector_3d& high, const Feature_settings& settings, Feature_chunk& out,
+                   std::uint64_t cube = 0, bool strict = true)
+    : m_low(low), m_high(high), m_settings(settings), m_out(out), m_cube(cube), m_strict(strict)
   {}
 
   Feature_kind operator()(const Vector_3d* p, const Vector_3d* n, std::size_t size, Vector_3d& apex) const
@@ -172,25 +178,33 @@ public:
     // tried (a "corner" of three nearly coplanar facets of a curved surface
     // is often just a crease).
     bool folded = false;
+    const Fold_test test = m_strict ? Fold_test::STRICT : Fold_test::SUM;
     const auto unfolded = [&](const Vector_3d& x) {
-      const bool ok = fan_is_unfolded(p, n, size, x);
+      const bool ok = fan_is_unfolded(p, n, size, x, test);
       folded = folded || !ok;
       return ok;
     };
     const Feature_kind kind = feature_vertex(p, n, size, m_low, m_high, m_settings, unfolded, apex);
     if(kind != Feature_kind::NONE)
+    {
+      // The apex is the next feature point (triangulate_feature_cube()).
+      if(!m_strict && !fan_is_unfolded(p, n, size, apex, Fold_test::STRICT))
+        m_out.weak_fans.push_back({{std::uint64_t(m_out.feature_points.size()), m_cube}});
       return kind;
+    }
     if(folded)
-      ++m_counts.folded;
+      ++m_out.plain.folded;
     else
-      ++m_counts.no_point;
+      ++m_out.plain.no_point;
     return Feature_kind::NONE;
   }
 
 private:
   Vector_3d m_low, m_high;
   const Feature_settings& m_settings;
-  Plain_feature_counts& m_counts;
+  Feature_chunk& m_out;
+  std::uint64_t m_cube;
+  bool m_strict;
 };
 
 /// Whether two triangles of different polygons of one cube intersect: the
@@ -289,6 +303,8 @@ void triangulate_feature_cube(const Marching_cubes_table& table, unsigned code, 
      !polygons_intersect(out, triangles_before, polygon_end.data(), polygons, points))
     return;
   out.plain.folded += out.feature_points.size() - features_before;
+  while(!out.weak_fans.empty() && out.weak_fans.back()[0] >= features_before)
+    out.weak_fans.pop_back();
   out.triangles.resize(triangles_before);
   out.feature_points.resize(features_before);
   out.feature_kinds.resize(features_before);
