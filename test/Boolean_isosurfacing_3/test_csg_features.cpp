@@ -279,7 +279,7 @@ Csg_run measure_creases(const std::vector<Mesh>& meshes, const std::string& expr
             << "); to crease edges max " << covered.max << " r, p95 " << covered.p95 << " r; corners "
             << run.features.corner_vertices.size() << "; plain feature polygons "
             << run.statistics.plain_feature_polygons << "\n";
-  // Measured (features.md): box & rotated box p95 0.14-0.21 r, cylinder |
+  // Measured (features.md): box & rotated box p95 0.14-0.29 r, cylinder |
   // box 0.011-0.036 r (0.30-0.37 and 0.14-0.20 r with the strict fold test
   // everywhere); plain MC 0.49-0.58 r.  The crease polylines still have
   // gaps where a cube keeps its plain triangulation.
@@ -370,7 +370,7 @@ TEST(CsgFeatures, BoxIntersectedWithARotatedBox)
   for(std::size_t cells : {16, 32, 64})
   {
     SCOPED_TRACE("cells " + std::to_string(cells));
-    const Csg_run run = measure_creases({a, b}, "A & B", cells, sharp, "box & rotated box", 0.25);
+    const Csg_run run = measure_creases({a, b}, "A & B", cells, sharp, "box & rotated box", 0.35);
     const double r = run.spacing;
     // Crease edges are on the exact sharp edges (most of them: a few flips
     // join two feature vertices across a face near a corner).
@@ -1711,24 +1711,34 @@ TEST(CsgFeatures, MovedCopiesThatOnceSelfIntersectedDoNot)
 }
 
 // The weaker fold test (Fold_test::SUM) keeps more crease points but can let
-// a fan cross a neighbouring triangle: of 81 runs of shared meshes against
-// their moved copy (bunny_hoppe, fandisk, rocker-arm; 3 operations; 32 to
-// 128 cells), bunny_hoppe minus the copy at 112 cells did.  The check after
-// the extraction finds those fans, and the extraction runs again with the
-// strict test in their cubes: closed, 2-manifold, no self-intersection.
+// a fan cross a neighbouring triangle: of 63 runs of the csg tool on shared
+// meshes against their moved copy (7 meshes, 3 operations, 64 to 256
+// cells), 4 did, among them armadillo minus the copy at 64 cells on the
+// tool's lattice (A's box).  The check after the extraction finds those
+// fans, and the extraction runs again with the strict test in their cubes:
+// closed, 2-manifold, no self-intersection, the same with either tag.
 TEST(CsgFeatures, WeakFansThatMeetATriangleGetTheStrictTest)
 {
   Mesh mesh;
-  BI::IO::read_closed_triangle_mesh(std::string(BISO_SHARED_DATA_DIR) + "/meshes/bunny_hoppe.off", mesh);
-  const Csg_run run = run_csg({mesh, BI::test::moved_copy(mesh)}, "A & !B", 112);
-  check_valid(run, "bunny_hoppe - moved copy, 112 cells");
+  BI::IO::read_closed_triangle_mesh(std::string(BISO_SHARED_DATA_DIR) + "/meshes/armadillo.obj", mesh);
+  const std::vector<Mesh> meshes{mesh, BI::test::moved_copy(mesh)};
+  const BI::Regular_lattice_3 lattice = BI::Regular_lattice_3::enclosing_with_cells(PMP::bbox(mesh), 64);
+  const auto run_with = [&](auto tag) {
+    Csg_run run;
+    run.spacing = lattice.spacing();
+    run.statistics = BI::marching_cubes_csg<decltype(tag)>(lattice, meshes, BI::Boolean_expression::parse("A & !B"),
+                                                           run.points, run.triangles,
+                                                           BI::parameters::sharp_feature_output(&run.features));
+    PMP::polygon_soup_to_polygon_mesh(run.points, run.triangles, run.mesh);
+    return run;
+  };
+  const Csg_run run = run_with(CGAL::Sequential_tag());
+  check_valid(run, "armadillo - moved copy, 64 cells on A's box");
   EXPECT_EQ(run.statistics.extraction_runs, 2u);
   EXPECT_GT(run.statistics.strict_fold_cubes, 0u);
   EXPECT_LT(run.statistics.strict_fold_cubes, 20u); // only the cubes of the fans found
   EXPECT_GT(run.statistics.weak_fans, 100u);
-  // With the parallel tag: the same cubes found, the same output.
-  const Csg_run parallel =
-      run_csg<CGAL::Parallel_if_available_tag>({mesh, BI::test::moved_copy(mesh)}, "A & !B", 112);
+  const Csg_run parallel = run_with(CGAL::Parallel_if_available_tag());
   EXPECT_EQ(parallel.statistics.strict_fold_cubes, run.statistics.strict_fold_cubes);
   EXPECT_TRUE(parallel.points == run.points);
   EXPECT_TRUE(parallel.triangles == run.triangles);

@@ -177,9 +177,14 @@ public:
     // A candidate whose fan would fold is refused and the next lower rank
     // tried (a "corner" of three nearly coplanar facets of a curved surface
     // is often just a crease).
+    // The weaker test only for candidates of the quadric's own rank: a lower
+    // rank tried after those were refused drops a plane, and its line can
+    // leave the solid past a corner (a box whose faces are lattice planes
+    // got a vertex 0.14 cells off its face from the line of two of its
+    // three planes, which the weaker test let through).
     bool folded = false;
-    const Fold_test test = m_strict ? Fold_test::STRICT : Fold_test::SUM;
-    const auto unfolded = [&](const Vector_3d& x) {
+    const auto unfolded = [&](const Vector_3d& x, bool full_rank) {
+      const Fold_test test = m_strict || !full_rank ? Fold_test::STRICT : Fold_test::SUM;
       const bool ok = fan_is_unfolded(p, n, size, x, test);
       folded = folded || !ok;
       return ok;

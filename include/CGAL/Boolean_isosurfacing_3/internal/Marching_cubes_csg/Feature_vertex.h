@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -177,7 +178,9 @@ constexpr std::size_t crease_candidates = 9;
 /// feature of this cube.  A point within rounding of the cube is clamped
 /// into it.
 /// `accept(x)` may refuse a candidate point (a fan that would fold): when
-/// every candidate of a rank is refused, the next lower rank is tried.
+/// every candidate of a rank is refused, the next lower rank is tried.  An
+/// `accept(x, full_rank)` is told whether x is a candidate of the quadric's
+/// own rank (not a lower rank tried after those were refused).
 template <typename Accept>
 Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, std::size_t n, const Vector_3d& low,
                             const Vector_3d& high, const Feature_settings& settings, const Accept& accept,
@@ -187,6 +190,12 @@ Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, s
     return Feature_kind::NONE;
   const Feature_quadric quadric(points, normals, n, settings);
   const double tolerance = 1e-9 * (high[0] - low[0]);
+  const auto accepted = [&](const Vector_3d& x, int rank) {
+    if constexpr(std::is_invocable_r<bool, const Accept&, const Vector_3d&, bool>::value)
+      return accept(x, rank == quadric.rank());
+    else
+      return accept(x);
+  };
   for(int r = quadric.rank(); r >= 2; --r)
   {
     Vector_3d x, d;
@@ -202,7 +211,7 @@ Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, s
       bool inside = true;
       for(int a = 0; a < 3; ++a)
         inside = inside && x[a] >= low[a] - tolerance && x[a] <= high[a] + tolerance;
-      if(inside && accept(clamped(x)))
+      if(inside && accepted(clamped(x), r))
       {
         result = clamped(x);
         return Feature_kind::CORNER;
@@ -230,7 +239,7 @@ Feature_kind feature_vertex(const Vector_3d* points, const Vector_3d* normals, s
       for(int a = 0; a < 3; ++a)
         y[a] = x[a] + t * d[a];
       y = clamped(y);
-      if(accept(y))
+      if(accepted(y, r))
       {
         result = y;
         return Feature_kind::CREASE;
