@@ -274,7 +274,7 @@ enum class Fold_test
   /// normals.  A chamfer triangle from a vertex of one plane to a vertex of
   /// the other across a crease of 90 degrees or more is often obtuse to one
   /// of them without any fold, so this test keeps far more crease points
-  /// (sharp edges p95 0.26 -> 0.06 r on mechpart minus a moved copy); but it
+  /// (sharp edges p95 0.26 -> 0.07 r on mechpart minus a moved copy); but it
   /// can let a fan cross a neighbouring triangle, so `marching_cubes_csg()`
   /// checks those fans and gives their cubes the strict test where one does
   /// (`Weak_fan_check.h`).
