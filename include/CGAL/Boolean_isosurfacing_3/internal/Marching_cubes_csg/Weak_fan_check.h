@@ -22,6 +22,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
@@ -153,7 +154,6 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
   // the lowest corner of the two boxes' intersection (each pair once).
   // (CGAL's box_intersection_d() took 5-20 ms here at 128 cells, as long as
   // the whole feature triangulation: the triangles are all about a cell.)
-  const double spacing = lattice.spacing();
   std::array<double, 3> origin;
   std::array<std::size_t, 3> cells;
   std::size_t b = 1;
@@ -167,26 +167,20 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
   }
   for(int a = 0; a < 3; ++a)
     origin[a] = lattice.coordinate(a, 0);
-  const double cell_size = spacing * double(b);
+  const double cell_size = lattice.spacing() * double(b);
   const auto cell_of = [&](int a, double x) {
     const double c = std::floor((x - origin[a]) / cell_size);
     return c >= 0 ? std::size_t((std::min)(c, double(cells[a] - 1))) : std::size_t(0);
   };
-  typedef std::array<double, 6> Box; // min x y z, max x y z
   const auto box_of = [&](const Triangle& t) {
-    Box box;
-    for(int a = 0; a < 3; ++a)
-    {
-      const double x = points[std::size_t(t[0])][a], y = points[std::size_t(t[1])][a],
-                   z = points[std::size_t(t[2])][a];
-      box[a] = (std::min)({x, y, z});
-      box[a + 3] = (std::max)({x, y, z});
-    }
-    return box;
+    const std::array<double, 3>&p = points[std::size_t(t[0])], &q = points[std::size_t(t[1])],
+                                &r = points[std::size_t(t[2])];
+    return CGAL::Bbox_3((std::min)({p[0], q[0], r[0]}), (std::min)({p[1], q[1], r[1]}), (std::min)({p[2], q[2], r[2]}),
+                        (std::max)({p[0], q[0], r[0]}), (std::max)({p[1], q[1], r[1]}), (std::max)({p[2], q[2], r[2]}));
   };
-  const auto for_each_cell = [&](const Box& box, const auto& f) {
-    const std::array<std::size_t, 3> lo{{cell_of(0, box[0]), cell_of(1, box[1]), cell_of(2, box[2])}};
-    const std::array<std::size_t, 3> hi{{cell_of(0, box[3]), cell_of(1, box[4]), cell_of(2, box[5])}};
+  const auto for_each_cell = [&](const CGAL::Bbox_3& box, const auto& f) {
+    const std::array<std::size_t, 3> lo{{cell_of(0, box.xmin()), cell_of(1, box.ymin()), cell_of(2, box.zmin())}};
+    const std::array<std::size_t, 3> hi{{cell_of(0, box.xmax()), cell_of(1, box.ymax()), cell_of(2, box.zmax())}};
     for(std::size_t k = lo[2]; k <= hi[2]; ++k)
       for(std::size_t j = lo[1]; j <= hi[1]; ++j)
         for(std::size_t i = lo[0]; i <= hi[0]; ++i)
@@ -194,7 +188,7 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
   };
 
   std::vector<std::size_t> weak_triangles;
-  std::vector<Box> weak_boxes;
+  std::vector<CGAL::Bbox_3> weak_boxes;
   std::vector<std::pair<std::size_t, std::uint32_t>> listed; // (cell, index into weak_triangles)
   std::vector<bool> marked(cells[0] * cells[1] * cells[2], false);
   for(std::size_t t = 0; t < triangles.size(); ++t)
@@ -219,7 +213,7 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
   concurrent_for<ConcurrencyTag>(ranges, [&](std::size_t range) {
     for(std::size_t t = triangles.size() * range / ranges; t < triangles.size() * (range + 1) / ranges; ++t)
     {
-      const Box box = box_of(triangles[t]);
+      const CGAL::Bbox_3 box = box_of(triangles[t]);
       const bool t_is_weak = is_weak(triangles[t]);
       for_each_cell(box, [&](std::size_t cell, const std::array<std::size_t, 3>& ijk) {
         if(!marked[cell])
@@ -231,15 +225,12 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
           // A pair of weak triangles once, from the higher one.
           if(u == t || (t_is_weak && u > t))
             continue;
-          const Box& other = weak_boxes[it->second];
-          bool overlap = true;
-          for(int a = 0; a < 3; ++a)
-            overlap = overlap && box[a] <= other[a + 3] && other[a] <= box[a + 3];
-          if(!overlap)
+          const CGAL::Bbox_3& other = weak_boxes[it->second];
+          if(!CGAL::do_overlap(box, other))
             continue;
           bool lowest = true;
           for(int a = 0; a < 3; ++a)
-            lowest = lowest && cell_of(a, (std::max)(box[a], other[a])) == ijk[a];
+            lowest = lowest && cell_of(a, (std::max)(box.min(a), other.min(a))) == ijk[a];
           if(!lowest || !triangles_intersect(points, triangles[t], triangles[u]))
             continue;
           for(const std::size_t x : {t, u})
