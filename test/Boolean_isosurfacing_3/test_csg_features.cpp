@@ -1775,6 +1775,69 @@ TEST(CsgFeaturesTable, TrianglesSharingVerticesMeetOnlyBeyondThem)
   EXPECT_FALSE(MC::triangles_intersect(p, base, T{{4, 6, 9}}));
 }
 
+// Points on a common lattice-parallel plane (a CAD face) make exact zero
+// orientations, which Weak_fan_check.h decides in 2D along that axis: the
+// same answers as the 3D predicates on every pair of non-degenerate
+// triangles of a small grid (0, 1 or 2 vertices shared), where most pairs
+// are coplanar, many on an axis plane.
+TEST(CsgFeaturesTable, TrianglesOnLatticePlanesMeetAsIn3D)
+{
+  std::vector<std::array<double, 3>> p;
+  for(int k = 0; k < 3; ++k)
+    for(int j = 0; j < 4; ++j)
+      for(int i = 0; i < 4; ++i)
+        p.push_back({{0.5 * i, 0.5 * j, 0.5 * k}});
+  typedef std::array<std::size_t, 3> T;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  const auto degenerate = [&](const T& t) {
+    const auto q = [&](std::size_t v) { return K::Point_3(p[v][0], p[v][1], p[v][2]); };
+    return CGAL::collinear(q(t[0]), q(t[1]), q(t[2]));
+  };
+  std::mt19937 random(7);
+  std::uniform_int_distribution<std::size_t> vertex(0, p.size() - 1);
+  std::uniform_int_distribution<int> plane(0, 3), shared(0, 2);
+  const auto on_plane = [&](int axis, double c) {
+    // A vertex on plane coordinate[axis] = c (any vertex when axis is 3).
+    for(;;)
+    {
+      const std::size_t v = vertex(random);
+      if(axis == 3 || p[v][std::size_t(axis)] == c)
+        return v;
+    }
+  };
+  std::array<std::size_t, 3> pairs{{0, 0, 0}}, meeting{{0, 0, 0}};
+  for(int n = 0; n < 60000; ++n)
+  {
+    const int axis = plane(random);
+    const double c = 0.5 * (n % 3);
+    T a{{on_plane(axis, c), on_plane(axis, c), on_plane(axis, c)}};
+    T b{{on_plane(axis, c), on_plane(axis, c), on_plane(axis, c)}};
+    const int s = shared(random);
+    if(s >= 1)
+      b[0] = a[0];
+    if(s == 2)
+      b[1] = a[2]; // the opposite direction of edge a[2] -> a[0]: consistently oriented
+    const std::set<std::size_t> distinct{a[0], a[1], a[2], b[0], b[1], b[2]};
+    if(distinct.size() != std::size_t(6 - s) || degenerate(a) || degenerate(b))
+      continue;
+    const auto q = [&](std::size_t v) { return K::Point_3(p[v][0], p[v][1], p[v][2]); };
+    const std::array<K::Point_3, 3> ta{{q(a[0]), q(a[1]), q(a[2])}};
+    for(const std::size_t v : b)
+      EXPECT_EQ(MC::orientation_to(ta, q(v)), CGAL::orientation(ta[0], ta[1], ta[2], q(v)));
+    const bool in_2d = MC::triangles_intersect(p, a, b, true), in_3d = MC::triangles_intersect(p, a, b, false);
+    EXPECT_EQ(in_2d, in_3d) << "shared " << s << ": " << a[0] << " " << a[1] << " " << a[2] << " / " << b[0] << " "
+                            << b[1] << " " << b[2];
+    ++pairs[std::size_t(s)];
+    meeting[std::size_t(s)] += in_3d ? 1 : 0;
+  }
+  for(int s = 0; s < 3; ++s)
+  {
+    // Both answers, many times each.
+    EXPECT_GT(meeting[std::size_t(s)], 500u) << s;
+    EXPECT_GT(pairs[std::size_t(s)] - meeting[std::size_t(s)], 500u) << s;
+  }
+}
+
 // A face passing 1e-7 r from a lattice point: three edge points within
 // rounding of it, a tiny triangle between them and needles of a quality
 // near 1e-12 around it, whose normals are rounding.  The collapses must

@@ -39,15 +39,100 @@ namespace Boolean_isosurfacing {
 namespace internal {
 namespace Marching_cubes_csg {
 
+/// The axis along which all `n` points have the same coordinate, or -1.
+/// The flat faces of CAD inputs lie on lattice-parallel planes, and their
+/// edge points on such a plane are exactly coplanar: there the orientations
+/// are exactly zero, which no filter decides (each one a multiprecision
+/// evaluation).  Projected along that axis they are decided in 2D instead.
+template <typename Point, std::size_t n>
+int common_axis_plane(const std::array<const Point*, n>& p)
+{
+  for(int a = 0; a < 3; ++a)
+  {
+    bool same = true;
+    for(std::size_t i = 1; i < n && same; ++i)
+      same = (*p[i])[a] == (*p[0])[a];
+    if(same)
+      return a;
+  }
+  return -1;
+}
+
+/// The projection of `p` along `axis`: its two other coordinates, in cyclic
+/// order.
+template <typename Point>
+Exact_predicates_inexact_constructions_kernel::Point_2 drop_axis(const Point& p, int axis)
+{
+  return {p[(axis + 1) % 3], p[(axis + 2) % 3]};
+}
+
+/// The orientation of `s` to the plane of triangle `t`, as
+/// `CGAL::orientation()`; when `t` lies on a lattice-parallel plane, from the
+/// side of `s` along that axis and the projected orientation of `t` (a
+/// comparison and a 2D orientation, exact without a filter failing on the
+/// points of that plane).
+template <typename Point>
+CGAL::Orientation orientation_to(const std::array<Point, 3>& t, const Point& s)
+{
+  for(int a = 0; a < 3; ++a)
+    if(t[0][a] == t[1][a] && t[1][a] == t[2][a])
+    {
+      if(s[a] == t[0][a])
+        return CGAL::COPLANAR;
+      // det(t1 - t0, t2 - t0, s - t0) = (s - t0)[a] * the 2D determinant of
+      // the two other coordinates taken in cyclic order.
+      const CGAL::Orientation o = CGAL::orientation(drop_axis(t[0], a), drop_axis(t[1], a), drop_axis(t[2], a));
+      return s[a] > t[0][a] ? o : CGAL::opposite(o);
+    }
+  return CGAL::orientation(t[0], t[1], t[2], s);
+}
+
+/// Whether segment [c, d] meets the closed, non-degenerate triangle t, in
+/// 2D: an endpoint in t, or the segment meets a side.  Orientations only
+/// (CGAL 5.5's do_intersect() of a Segment_2 and a Triangle_2 clips with
+/// constructed points, inexact on this kernel).
+template <typename Point_2>
+bool segment_meets_triangle_2(const Point_2& c, const Point_2& d, const std::array<Point_2, 3>& t)
+{
+  const CGAL::Orientation o = CGAL::orientation(t[0], t[1], t[2]);
+  const auto inside = [&](const Point_2& x) {
+    for(int i = 0; i < 3; ++i)
+      if(CGAL::orientation(t[i], t[(i + 1) % 3], x) == -o)
+        return false;
+    return true;
+  };
+  if(inside(c) || inside(d))
+    return true;
+  typedef Exact_predicates_inexact_constructions_kernel::Segment_2 Segment_2;
+  const Segment_2 cd(c, d);
+  for(int i = 0; i < 3; ++i)
+    if(CGAL::do_intersect(cd, Segment_2(t[i], t[(i + 1) % 3])))
+      return true;
+  return false;
+}
+
 /// Whether segment [c, d] meets the closed triangle t (c and d strictly on
 /// opposite sides of its plane: then it does iff the line cd passes the
 /// triangle's three sides on one side; statically filtered orientations).
-/// Otherwise CGAL's general test.
+/// Otherwise CGAL's general test, in 2D when the five points lie on a
+/// lattice-parallel plane (`use_axis_planes`).
 template <typename Point>
-bool segment_meets_triangle(const Point& c, const Point& d, const std::array<Point, 3>& t)
+bool segment_meets_triangle(const Point& c, const Point& d, const std::array<Point, 3>& t,
+                            bool use_axis_planes = true)
 {
   typedef Exact_predicates_inexact_constructions_kernel K;
-  const CGAL::Orientation oc = CGAL::orientation(t[0], t[1], t[2], c), od = CGAL::orientation(t[0], t[1], t[2], d);
+  if(use_axis_planes)
+  {
+    const int axis = common_axis_plane(std::array<const Point*, 5>{{&c, &d, &t[0], &t[1], &t[2]}});
+    if(axis >= 0)
+    {
+      const std::array<K::Point_2, 3> triangle{{drop_axis(t[0], axis), drop_axis(t[1], axis), drop_axis(t[2], axis)}};
+      return !CGAL::collinear(triangle[0], triangle[1], triangle[2]) &&
+             segment_meets_triangle_2(drop_axis(c, axis), drop_axis(d, axis), triangle);
+    }
+  }
+  const CGAL::Orientation oc = use_axis_planes ? orientation_to(t, c) : CGAL::orientation(t[0], t[1], t[2], c);
+  const CGAL::Orientation od = use_axis_planes ? orientation_to(t, d) : CGAL::orientation(t[0], t[1], t[2], d);
   if(oc == od && oc != CGAL::COPLANAR)
     return false;
   if(oc == CGAL::COPLANAR || od == CGAL::COPLANAR)
@@ -71,8 +156,11 @@ bool segment_meets_triangle(const Point& c, const Point& d, const std::array<Poi
 /// and on the same side of it; two sharing a vertex iff the side opposite it
 /// in one meets the other triangle.  Exact predicates; a degenerate triangle
 /// sharing no vertex meets nothing (the output has none: `test_csg_features`).
+/// Points on a common lattice-parallel plane are decided in 2D
+/// (`use_axis_planes`; the same answers, `test_csg_features` compares them).
 template <typename Triangle>
-bool triangles_intersect(const std::vector<std::array<double, 3>>& points, const Triangle& a, const Triangle& b)
+bool triangles_intersect(const std::vector<std::array<double, 3>>& points, const Triangle& a, const Triangle& b,
+                         bool use_axis_planes = true)
 {
   typedef Exact_predicates_inexact_constructions_kernel K;
   typedef K::Point_3 Point;
@@ -93,8 +181,8 @@ bool triangles_intersect(const std::vector<std::array<double, 3>>& points, const
   if(shared == 1)
   {
     const int i = in_b[0] >= 0 ? 0 : (in_b[1] >= 0 ? 1 : 2), j = in_b[i];
-    return segment_meets_triangle(pa[(i + 1) % 3], pa[(i + 2) % 3], pb) ||
-           segment_meets_triangle(pb[(j + 1) % 3], pb[(j + 2) % 3], pa);
+    return segment_meets_triangle(pa[(i + 1) % 3], pa[(i + 2) % 3], pb, use_axis_planes) ||
+           segment_meets_triangle(pb[(j + 1) % 3], pb[(j + 2) % 3], pa, use_axis_planes);
   }
   if(shared == 2)
   {
@@ -103,14 +191,36 @@ bool triangles_intersect(const std::vector<std::array<double, 3>>& points, const
     while(b[j] == a[(i + 1) % 3] || b[j] == a[(i + 2) % 3])
       ++j;
     const Point &p = pa[(i + 1) % 3], &q = pa[(i + 2) % 3], &r = pa[i], &s = pb[j];
+    const int axis = use_axis_planes ? common_axis_plane(std::array<const Point*, 4>{{&p, &q, &r, &s}}) : -1;
+    if(axis >= 0)
+    {
+      // Coplanar; r and s on the same side of pq in the plane.
+      const K::Point_2 p2 = drop_axis(p, axis), q2 = drop_axis(q, axis);
+      const CGAL::Orientation o = CGAL::orientation(p2, q2, drop_axis(r, axis));
+      return o != CGAL::COLLINEAR && CGAL::orientation(p2, q2, drop_axis(s, axis)) == o;
+    }
     return CGAL::coplanar(p, q, r, s) && CGAL::coplanar_orientation(p, q, r, s) == CGAL::POSITIVE;
   }
-  // No shared vertex: apart if one lies strictly on one side of the
-  // other's plane (most pairs), else CGAL's general test.
-  const auto apart = [](const std::array<Point, 3>& t, const std::array<Point, 3>& u) {
-    const CGAL::Orientation o = CGAL::orientation(t[0], t[1], t[2], u[0]);
-    return o != CGAL::COPLANAR && CGAL::orientation(t[0], t[1], t[2], u[1]) == o &&
-           CGAL::orientation(t[0], t[1], t[2], u[2]) == o;
+  // No shared vertex.
+  if(use_axis_planes)
+  {
+    const int axis = common_axis_plane(
+        std::array<const Point*, 6>{{&pa[0], &pa[1], &pa[2], &pb[0], &pb[1], &pb[2]}});
+    if(axis >= 0)
+    {
+      const K::Triangle_2 ta(drop_axis(pa[0], axis), drop_axis(pa[1], axis), drop_axis(pa[2], axis));
+      const K::Triangle_2 tb(drop_axis(pb[0], axis), drop_axis(pb[1], axis), drop_axis(pb[2], axis));
+      return !ta.is_degenerate() && !tb.is_degenerate() && CGAL::do_intersect(ta, tb);
+    }
+  }
+  // Apart if one lies strictly on one side of the other's plane (most
+  // pairs), else CGAL's general test.
+  const auto side = [&](const std::array<Point, 3>& t, const Point& x) {
+    return use_axis_planes ? orientation_to(t, x) : CGAL::orientation(t[0], t[1], t[2], x);
+  };
+  const auto apart = [&](const std::array<Point, 3>& t, const std::array<Point, 3>& u) {
+    const CGAL::Orientation o = side(t, u[0]);
+    return o != CGAL::COPLANAR && side(t, u[1]) == o && side(t, u[2]) == o;
   };
   if(apart(pa, pb) || apart(pb, pa))
     return false;
@@ -167,28 +277,40 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
   }
   for(int a = 0; a < 3; ++a)
     origin[a] = lattice.coordinate(a, 0);
-  const double cell_size = lattice.spacing() * double(b);
+  // Any nondecreasing map of a coordinate to its cell finds each pair once
+  // (the cell of the larger of two lower bounds is the larger of their
+  // cells): a product, not a division.
+  const double inverse_cell_size = 1 / (lattice.spacing() * double(b));
   const auto cell_of = [&](int a, double x) {
-    const double c = std::floor((x - origin[a]) / cell_size);
-    return c >= 0 ? std::size_t((std::min)(c, double(cells[a] - 1))) : std::size_t(0);
+    const double c = std::floor((x - origin[a]) * inverse_cell_size);
+    return c >= 0 ? std::uint32_t((std::min)(c, double(cells[a] - 1))) : std::uint32_t(0);
   };
-  const auto box_of = [&](const Triangle& t) {
+  struct Cell_box
+  {
+    CGAL::Bbox_3 box;
+    std::array<std::uint32_t, 3> lo, hi; // its cells
+  };
+  const auto cell_box_of = [&](const Triangle& t) {
     const std::array<double, 3>&p = points[std::size_t(t[0])], &q = points[std::size_t(t[1])],
                                 &r = points[std::size_t(t[2])];
-    return CGAL::Bbox_3((std::min)({p[0], q[0], r[0]}), (std::min)({p[1], q[1], r[1]}), (std::min)({p[2], q[2], r[2]}),
-                        (std::max)({p[0], q[0], r[0]}), (std::max)({p[1], q[1], r[1]}), (std::max)({p[2], q[2], r[2]}));
+    Cell_box c;
+    c.box = CGAL::Bbox_3((std::min)({p[0], q[0], r[0]}), (std::min)({p[1], q[1], r[1]}), (std::min)({p[2], q[2], r[2]}),
+                         (std::max)({p[0], q[0], r[0]}), (std::max)({p[1], q[1], r[1]}), (std::max)({p[2], q[2], r[2]}));
+    for(int a = 0; a < 3; ++a)
+    {
+      c.lo[a] = cell_of(a, c.box.min(a));
+      c.hi[a] = cell_of(a, c.box.max(a));
+    }
+    return c;
   };
-  const auto for_each_cell = [&](const CGAL::Bbox_3& box, const auto& f) {
-    const std::array<std::size_t, 3> lo{{cell_of(0, box.xmin()), cell_of(1, box.ymin()), cell_of(2, box.zmin())}};
-    const std::array<std::size_t, 3> hi{{cell_of(0, box.xmax()), cell_of(1, box.ymax()), cell_of(2, box.zmax())}};
-    for(std::size_t k = lo[2]; k <= hi[2]; ++k)
-      for(std::size_t j = lo[1]; j <= hi[1]; ++j)
-        for(std::size_t i = lo[0]; i <= hi[0]; ++i)
-          f(i + cells[0] * (j + cells[1] * k), std::array<std::size_t, 3>{{i, j, k}});
+  const auto cell_index = [&](std::size_t i, std::size_t j, std::size_t k) {
+    return i + cells[0] * (j + cells[1] * k);
   };
 
+  // The weak triangles, and for each cell their list (sorted cell ids,
+  // offsets, members: one binary search a marked cell).
   std::vector<std::size_t> weak_triangles;
-  std::vector<CGAL::Bbox_3> weak_boxes;
+  std::vector<Cell_box> weak_boxes;
   std::vector<std::pair<std::size_t, std::uint32_t>> listed; // (cell, index into weak_triangles)
   std::vector<bool> marked(cells[0] * cells[1] * cells[2], false);
   for(std::size_t t = 0; t < triangles.size(); ++t)
@@ -196,15 +318,32 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
     {
       const std::uint32_t w = std::uint32_t(weak_triangles.size());
       weak_triangles.push_back(t);
-      weak_boxes.push_back(box_of(triangles[t]));
-      for_each_cell(weak_boxes.back(), [&](std::size_t cell, const std::array<std::size_t, 3>&) {
-        listed.emplace_back(cell, w);
-        marked[cell] = true;
-      });
+      weak_boxes.push_back(cell_box_of(triangles[t]));
+      const Cell_box& c = weak_boxes.back();
+      for(std::size_t k = c.lo[2]; k <= c.hi[2]; ++k)
+        for(std::size_t j = c.lo[1]; j <= c.hi[1]; ++j)
+          for(std::size_t i = c.lo[0]; i <= c.hi[0]; ++i)
+          {
+            listed.emplace_back(cell_index(i, j, k), w);
+            marked[listed.back().first] = true;
+          }
     }
   if(weak_triangles.empty())
     return cubes;
   std::sort(listed.begin(), listed.end());
+  std::vector<std::size_t> listed_cells;
+  std::vector<std::uint32_t> first_listed, members(listed.size());
+  for(std::size_t l = 0; l < listed.size(); ++l)
+  {
+    if(l == 0 || listed[l].first != listed[l - 1].first)
+    {
+      listed_cells.push_back(listed[l].first);
+      first_listed.push_back(std::uint32_t(l));
+    }
+    members[l] = listed[l].second;
+  }
+  first_listed.push_back(std::uint32_t(listed.size()));
+  std::vector<std::pair<std::size_t, std::uint32_t>>().swap(listed);
 
   // Ranges of triangles in parallel; the cubes found do not depend on the
   // concurrency (they are sorted at the end).
@@ -213,32 +352,34 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
   concurrent_for<ConcurrencyTag>(ranges, [&](std::size_t range) {
     for(std::size_t t = triangles.size() * range / ranges; t < triangles.size() * (range + 1) / ranges; ++t)
     {
-      const CGAL::Bbox_3 box = box_of(triangles[t]);
+      const Cell_box c = cell_box_of(triangles[t]);
       const bool t_is_weak = is_weak(triangles[t]);
-      for_each_cell(box, [&](std::size_t cell, const std::array<std::size_t, 3>& ijk) {
-        if(!marked[cell])
-          return;
-        auto it = std::lower_bound(listed.begin(), listed.end(), std::make_pair(cell, std::uint32_t(0)));
-        for(; it != listed.end() && it->first == cell; ++it)
-        {
-          const std::size_t u = weak_triangles[it->second];
-          // A pair of weak triangles once, from the higher one.
-          if(u == t || (t_is_weak && u > t))
-            continue;
-          const CGAL::Bbox_3& other = weak_boxes[it->second];
-          if(!CGAL::do_overlap(box, other))
-            continue;
-          bool lowest = true;
-          for(int a = 0; a < 3; ++a)
-            lowest = lowest && cell_of(a, (std::max)(box.min(a), other.min(a))) == ijk[a];
-          if(!lowest || !triangles_intersect(points, triangles[t], triangles[u]))
-            continue;
-          for(const std::size_t x : {t, u})
-            for(int c = 0; c < 3; ++c)
-              if(const std::uint64_t cube = weak(std::size_t(triangles[x][c])))
-                found[range].push_back(cube - 1);
-        }
-      });
+      for(std::size_t k = c.lo[2]; k <= c.hi[2]; ++k)
+        for(std::size_t j = c.lo[1]; j <= c.hi[1]; ++j)
+          for(std::size_t i = c.lo[0]; i <= c.hi[0]; ++i)
+          {
+            const std::size_t cell = cell_index(i, j, k);
+            if(!marked[cell])
+              continue;
+            const std::size_t slot =
+                std::size_t(std::lower_bound(listed_cells.begin(), listed_cells.end(), cell) - listed_cells.begin());
+            for(std::uint32_t l = first_listed[slot]; l < first_listed[slot + 1]; ++l)
+            {
+              const std::size_t u = weak_triangles[members[l]];
+              // A pair of weak triangles once, from the higher one.
+              if(u == t || (t_is_weak && u > t))
+                continue;
+              const Cell_box& other = weak_boxes[members[l]];
+              if(!CGAL::do_overlap(c.box, other.box) || (std::max)(c.lo[0], other.lo[0]) != i ||
+                 (std::max)(c.lo[1], other.lo[1]) != j || (std::max)(c.lo[2], other.lo[2]) != k ||
+                 !triangles_intersect(points, triangles[t], triangles[u]))
+                continue;
+              for(const std::size_t x : {t, u})
+                for(int v = 0; v < 3; ++v)
+                  if(const std::uint64_t cube = weak(std::size_t(triangles[x][v])))
+                    found[range].push_back(cube - 1);
+            }
+          }
     }
   });
   for(const std::vector<std::uint64_t>& f : found)
