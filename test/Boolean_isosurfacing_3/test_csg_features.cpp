@@ -1823,7 +1823,10 @@ TEST(CsgFeaturesTable, TrianglesOnLatticePlanesMeetAsIn3D)
     const auto q = [&](std::size_t v) { return K::Point_3(p[v][0], p[v][1], p[v][2]); };
     const std::array<K::Point_3, 3> ta{{q(a[0]), q(a[1]), q(a[2])}};
     for(const std::size_t v : b)
+    {
       EXPECT_EQ(MC::orientation_to(ta, q(v)), CGAL::orientation(ta[0], ta[1], ta[2], q(v)));
+      EXPECT_EQ(MC::orientation_3(q(b[0]), q(b[1]), ta[0], q(v)), CGAL::orientation(q(b[0]), q(b[1]), ta[0], q(v)));
+    }
     const bool in_2d = MC::triangles_intersect(p, a, b, true), in_3d = MC::triangles_intersect(p, a, b, false);
     EXPECT_EQ(in_2d, in_3d) << "shared " << s << ": " << a[0] << " " << a[1] << " " << a[2] << " / " << b[0] << " "
                             << b[1] << " " << b[2];

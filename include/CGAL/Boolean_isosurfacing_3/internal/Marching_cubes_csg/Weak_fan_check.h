@@ -66,25 +66,31 @@ Exact_predicates_inexact_constructions_kernel::Point_2 drop_axis(const Point& p,
   return {p[(axis + 1) % 3], p[(axis + 2) % 3]};
 }
 
-/// The orientation of `s` to the plane of triangle `t`, as
-/// `CGAL::orientation()`; when `t` lies on a lattice-parallel plane, from the
-/// side of `s` along that axis and the projected orientation of `t` (a
-/// comparison and a 2D orientation, exact without a filter failing on the
-/// points of that plane).
+/// `CGAL::orientation(p, q, r, s)`; when p, q and r lie on a
+/// lattice-parallel plane, from the side of `s` along that axis and the
+/// projected orientation of p, q, r (a comparison and a 2D orientation,
+/// exact without a filter failing on the points of that plane).
+template <typename Point>
+CGAL::Orientation orientation_3(const Point& p, const Point& q, const Point& r, const Point& s)
+{
+  for(int a = 0; a < 3; ++a)
+    if(p[a] == q[a] && q[a] == r[a])
+    {
+      if(s[a] == p[a])
+        return CGAL::COPLANAR;
+      // det(q - p, r - p, s - p) = (s - p)[a] * the 2D determinant of the
+      // two other coordinates taken in cyclic order.
+      const CGAL::Orientation o = CGAL::orientation(drop_axis(p, a), drop_axis(q, a), drop_axis(r, a));
+      return s[a] > p[a] ? o : CGAL::opposite(o);
+    }
+  return CGAL::orientation(p, q, r, s);
+}
+
+/// The orientation of `s` to the plane of triangle `t` (orientation_3()).
 template <typename Point>
 CGAL::Orientation orientation_to(const std::array<Point, 3>& t, const Point& s)
 {
-  for(int a = 0; a < 3; ++a)
-    if(t[0][a] == t[1][a] && t[1][a] == t[2][a])
-    {
-      if(s[a] == t[0][a])
-        return CGAL::COPLANAR;
-      // det(t1 - t0, t2 - t0, s - t0) = (s - t0)[a] * the 2D determinant of
-      // the two other coordinates taken in cyclic order.
-      const CGAL::Orientation o = CGAL::orientation(drop_axis(t[0], a), drop_axis(t[1], a), drop_axis(t[2], a));
-      return s[a] > t[0][a] ? o : CGAL::opposite(o);
-    }
-  return CGAL::orientation(t[0], t[1], t[2], s);
+  return orientation_3(t[0], t[1], t[2], s);
 }
 
 /// Whether segment [c, d] meets the closed, non-degenerate triangle t, in
@@ -143,7 +149,8 @@ bool segment_meets_triangle(const Point& c, const Point& d, const std::array<Poi
   bool positive = false, negative = false;
   for(int i = 0; i < 3; ++i)
   {
-    const CGAL::Orientation o = CGAL::orientation(c, d, t[i], t[(i + 1) % 3]);
+    const CGAL::Orientation o = use_axis_planes ? orientation_3(c, d, t[i], t[(i + 1) % 3])
+                                                : CGAL::orientation(c, d, t[i], t[(i + 1) % 3]);
     positive = positive || o == CGAL::POSITIVE;
     negative = negative || o == CGAL::NEGATIVE;
   }
