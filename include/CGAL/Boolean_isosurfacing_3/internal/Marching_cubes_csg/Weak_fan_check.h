@@ -15,9 +15,10 @@
 //
 // Cost: two passes over the triangles (the weak ones, then every triangle
 // against the weak ones listed in the lattice cells its box meets), and
-// statically filtered orientations on the pairs whose boxes meet: about 10
-// pairs a weak triangle, 0.4 us a pair, 10-20 ms on one thread for the
-// moved copies at 128 cells (3,000-4,500 weak triangles).
+// statically filtered orientations on the pairs whose boxes meet (in 2D
+// where the points share a lattice plane): about 10 pairs a weak triangle,
+// 9-16 ms on one thread for the moved copies at 128 cells (2,500-3,500
+// weak triangles).
 
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
