@@ -204,11 +204,7 @@ public:
   // `strict_cubes` (ids i + nx (j + ny k), sorted), which must outlive the
   // builder; weak_fans() then lists the fans only that test accepted.
   // Without this call every fan passes the strict test.
-  void use_weak_fold_test(const std::vector<std::uint64_t>& strict_cubes)
-  {
-    m_all_strict = false;
-    m_strict_cubes = &strict_cubes;
-  }
+  void use_weak_fold_test(const std::vector<std::uint64_t>& strict_cubes) { m_strict_cubes = &strict_cubes; }
   // (f, cube id), increasing f: the fan of feature vertex f (0 for the
   // first feature vertex) passed only the weaker fold test.
   const std::vector<std::array<std::uint64_t, 2>>& weak_fans() const { return m_weak_fans; }
@@ -874,7 +870,7 @@ private:
           {m_lattice.coordinate(0, i + 1), m_lattice.coordinate(1, j + 1), m_lattice.coordinate(2, k + 1)}};
       const std::uint64_t cube = i + m_n[0] * (j + m_n[1] * std::uint64_t(k));
       const bool strict =
-          m_all_strict || std::binary_search(m_strict_cubes->begin(), m_strict_cubes->end(), cube);
+          m_strict_cubes == nullptr || std::binary_search(m_strict_cubes->begin(), m_strict_cubes->end(), cube);
       const Marching_cubes_csg::Feature_decision decide(cube_low, cube_high, m_features, out, cube, strict);
       Marching_cubes_csg::triangulate_feature_cube(table, code, vertex_of, points, m_normals, decide, out);
     });
@@ -892,8 +888,7 @@ private:
   Marching_cubes_csg::Edge_vertex_normals m_normals; // of each edge vertex (features only)
   std::vector<std::uint8_t>* m_vertex_meshes = nullptr;
   bool m_empty_state;               // the state of a point inside no mesh
-  bool m_all_strict = true;         // see use_weak_fold_test()
-  const std::vector<std::uint64_t>* m_strict_cubes = nullptr;
+  const std::vector<std::uint64_t>* m_strict_cubes = nullptr; // null: all strict (use_weak_fold_test())
   std::vector<std::array<std::uint64_t, 2>> m_weak_fans;
 };
 

@@ -68,13 +68,15 @@ Exact_predicates_inexact_constructions_kernel::Point_2 drop_axis(const Point& p,
 }
 
 /// `CGAL::orientation(p, q, r, s)`; when p, q and r lie on a
-/// lattice-parallel plane, from the side of `s` along that axis and the
-/// projected orientation of p, q, r (a comparison and a 2D orientation,
-/// exact without a filter failing on the points of that plane).
+/// lattice-parallel plane (and `use_axis_planes`), from the side of `s`
+/// along that axis and the projected orientation of p, q, r (a comparison
+/// and a 2D orientation, exact without a filter failing on the points of
+/// that plane).
 template <typename Point>
-CGAL::Orientation orientation_3(const Point& p, const Point& q, const Point& r, const Point& s)
+CGAL::Orientation orientation_3(const Point& p, const Point& q, const Point& r, const Point& s,
+                                bool use_axis_planes = true)
 {
-  for(int a = 0; a < 3; ++a)
+  for(int a = 0; a < 3 && use_axis_planes; ++a)
     if(p[a] == q[a] && q[a] == r[a])
     {
       if(s[a] == p[a])
@@ -89,9 +91,9 @@ CGAL::Orientation orientation_3(const Point& p, const Point& q, const Point& r, 
 
 /// The orientation of `s` to the plane of triangle `t` (orientation_3()).
 template <typename Point>
-CGAL::Orientation orientation_to(const std::array<Point, 3>& t, const Point& s)
+CGAL::Orientation orientation_to(const std::array<Point, 3>& t, const Point& s, bool use_axis_planes = true)
 {
-  return orientation_3(t[0], t[1], t[2], s);
+  return orientation_3(t[0], t[1], t[2], s, use_axis_planes);
 }
 
 /// Whether segment [c, d] meets the closed, non-degenerate triangle t, in
@@ -138,8 +140,7 @@ bool segment_meets_triangle(const Point& c, const Point& d, const std::array<Poi
              segment_meets_triangle_2(drop_axis(c, axis), drop_axis(d, axis), triangle);
     }
   }
-  const CGAL::Orientation oc = use_axis_planes ? orientation_to(t, c) : CGAL::orientation(t[0], t[1], t[2], c);
-  const CGAL::Orientation od = use_axis_planes ? orientation_to(t, d) : CGAL::orientation(t[0], t[1], t[2], d);
+  const CGAL::Orientation oc = orientation_to(t, c, use_axis_planes), od = orientation_to(t, d, use_axis_planes);
   if(oc == od && oc != CGAL::COPLANAR)
     return false;
   if(oc == CGAL::COPLANAR || od == CGAL::COPLANAR)
@@ -150,8 +151,7 @@ bool segment_meets_triangle(const Point& c, const Point& d, const std::array<Poi
   bool positive = false, negative = false;
   for(int i = 0; i < 3; ++i)
   {
-    const CGAL::Orientation o = use_axis_planes ? orientation_3(c, d, t[i], t[(i + 1) % 3])
-                                                : CGAL::orientation(c, d, t[i], t[(i + 1) % 3]);
+    const CGAL::Orientation o = orientation_3(c, d, t[i], t[(i + 1) % 3], use_axis_planes);
     positive = positive || o == CGAL::POSITIVE;
     negative = negative || o == CGAL::NEGATIVE;
   }
@@ -223,12 +223,10 @@ bool triangles_intersect(const std::vector<std::array<double, 3>>& points, const
   }
   // Apart if one lies strictly on one side of the other's plane (most
   // pairs), else CGAL's general test.
-  const auto side = [&](const std::array<Point, 3>& t, const Point& x) {
-    return use_axis_planes ? orientation_to(t, x) : CGAL::orientation(t[0], t[1], t[2], x);
-  };
   const auto apart = [&](const std::array<Point, 3>& t, const std::array<Point, 3>& u) {
-    const CGAL::Orientation o = side(t, u[0]);
-    return o != CGAL::COPLANAR && side(t, u[1]) == o && side(t, u[2]) == o;
+    const CGAL::Orientation o = orientation_to(t, u[0], use_axis_planes);
+    return o != CGAL::COPLANAR && orientation_to(t, u[1], use_axis_planes) == o &&
+           orientation_to(t, u[2], use_axis_planes) == o;
   };
   if(apart(pa, pb) || apart(pb, pa))
     return false;
