@@ -15,7 +15,8 @@
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Weak_fan_check.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Triangle_pair_intersection.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/does_triangle_soup_self_intersect.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/post_process_without_self_intersections.h>
@@ -32,6 +33,7 @@
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -1761,18 +1763,18 @@ TEST(CsgFeaturesTable, TrianglesSharingVerticesMeetOnlyBeyondThem)
   typedef std::array<std::size_t, 3> T;
   const T base{{0, 1, 2}};
   // A shared edge: folded onto the triangle, a flat continuation, a bend.
-  EXPECT_TRUE(MC::triangles_intersect(p, base, T{{1, 0, 3}}));
-  EXPECT_FALSE(MC::triangles_intersect(p, base, T{{1, 0, 8}}));
-  EXPECT_FALSE(MC::triangles_intersect(p, base, T{{1, 0, 4}}));
+  EXPECT_TRUE(BI::internal::triangles_intersect(p, base, T{{1, 0, 3}}));
+  EXPECT_FALSE(BI::internal::triangles_intersect(p, base, T{{1, 0, 8}}));
+  EXPECT_FALSE(BI::internal::triangles_intersect(p, base, T{{1, 0, 4}}));
   // A shared vertex: the opposite side pierces the triangle, or the two
   // touch at the vertex only.
-  EXPECT_TRUE(MC::triangles_intersect(p, base, T{{0, 5, 6}}));
-  EXPECT_TRUE(MC::triangles_intersect(p, T{{0, 5, 6}}, base));
-  EXPECT_FALSE(MC::triangles_intersect(p, base, T{{0, 7, 4}}));
-  EXPECT_FALSE(MC::triangles_intersect(p, base, T{{0, 4, 9}}));
+  EXPECT_TRUE(BI::internal::triangles_intersect(p, base, T{{0, 5, 6}}));
+  EXPECT_TRUE(BI::internal::triangles_intersect(p, T{{0, 5, 6}}, base));
+  EXPECT_FALSE(BI::internal::triangles_intersect(p, base, T{{0, 7, 4}}));
+  EXPECT_FALSE(BI::internal::triangles_intersect(p, base, T{{0, 4, 9}}));
   // No shared vertex.
-  EXPECT_TRUE(MC::triangles_intersect(p, base, T{{5, 6, 4}}));
-  EXPECT_FALSE(MC::triangles_intersect(p, base, T{{4, 6, 9}}));
+  EXPECT_TRUE(BI::internal::triangles_intersect(p, base, T{{5, 6, 4}}));
+  EXPECT_FALSE(BI::internal::triangles_intersect(p, base, T{{4, 6, 9}}));
 }
 
 // Points on a common lattice-parallel plane (a CAD face) make exact zero
@@ -1824,10 +1826,10 @@ TEST(CsgFeaturesTable, TrianglesOnLatticePlanesMeetAsIn3D)
     const std::array<K::Point_3, 3> ta{{q(a[0]), q(a[1]), q(a[2])}};
     for(const std::size_t v : b)
     {
-      EXPECT_EQ(MC::orientation_to(ta, q(v)), CGAL::orientation(ta[0], ta[1], ta[2], q(v)));
-      EXPECT_EQ(MC::orientation_3(q(b[0]), q(b[1]), ta[0], q(v)), CGAL::orientation(q(b[0]), q(b[1]), ta[0], q(v)));
+      EXPECT_EQ(BI::internal::orientation_to(ta, q(v)), CGAL::orientation(ta[0], ta[1], ta[2], q(v)));
+      EXPECT_EQ(BI::internal::orientation_3(q(b[0]), q(b[1]), ta[0], q(v)), CGAL::orientation(q(b[0]), q(b[1]), ta[0], q(v)));
     }
-    const bool in_2d = MC::triangles_intersect(p, a, b, true), in_3d = MC::triangles_intersect(p, a, b, false);
+    const bool in_2d = BI::internal::triangles_intersect(p, a, b, true), in_3d = BI::internal::triangles_intersect(p, a, b, false);
     EXPECT_EQ(in_2d, in_3d) << "shared " << s << ": " << a[0] << " " << a[1] << " " << a[2] << " / " << b[0] << " "
                             << b[1] << " " << b[2];
     ++pairs[std::size_t(s)];
@@ -1839,6 +1841,239 @@ TEST(CsgFeaturesTable, TrianglesOnLatticePlanesMeetAsIn3D)
     EXPECT_GT(meeting[std::size_t(s)], 500u) << s;
     EXPECT_GT(pairs[std::size_t(s)] - meeting[std::size_t(s)], 500u) << s;
   }
+}
+
+// ------------------------------------------------------ soup self-intersection
+
+typedef std::vector<std::array<double, 3>> Soup_points;
+typedef std::vector<std::array<std::uint32_t, 3>> Soup_triangles;
+
+void soup_of(const Mesh& mesh, Soup_points& points, Soup_triangles& triangles)
+{
+  std::vector<Point> p;
+  std::vector<std::array<std::size_t, 3>> t;
+  PMP::polygon_mesh_to_polygon_soup(mesh, p, t);
+  points.clear();
+  for(const Point& q : p)
+    points.push_back({{q.x(), q.y(), q.z()}});
+  triangles.clear();
+  for(const auto& f : t)
+    triangles.push_back({{std::uint32_t(f[0]), std::uint32_t(f[1]), std::uint32_t(f[2])}});
+}
+
+// The grid visits exactly the pairs of overlapping boxes (one triangle at
+// least selected), each once, on a soup of triangles from a hundredth of
+// the box to all of it, many sharing coordinates (boxes that touch), at
+// several cell sizes and with either tag.
+TEST(SoupSelfIntersection, TheGridVisitsEachPairOfOverlappingBoxesOnce)
+{
+  std::mt19937 random(23);
+  std::uniform_real_distribution<double> unit(0, 1);
+  Soup_points points;
+  Soup_triangles triangles;
+  for(std::uint32_t t = 0; t < 600; ++t)
+  {
+    const double size = std::pow(10.0, -2 + 2 * unit(random) * unit(random));
+    std::array<double, 3> c{{unit(random), unit(random), unit(random)}};
+    for(int v = 0; v < 3; ++v)
+    {
+      std::array<double, 3> p;
+      for(int a = 0; a < 3; ++a)
+        p[a] = t % 3 == 0 ? std::round((c[a] + size * (unit(random) - 0.5)) * 16) / 16 // shared coordinates
+                          : c[a] + size * (unit(random) - 0.5);
+      points.push_back(p);
+    }
+    triangles.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
+  }
+  const auto box = [&](std::size_t t) {
+    CGAL::Bbox_3 b;
+    for(int v = 0; v < 3; ++v)
+    {
+      const std::array<double, 3>& p = points[triangles[t][v]];
+      b += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+    }
+    return b;
+  };
+  const auto selected = [](std::size_t t) { return t % 5 == 0; };
+  for(const bool all : {true, false})
+    for(const double cell : {0.013, 0.05, 0.3, 2.0})
+    {
+      std::set<std::pair<std::size_t, std::size_t>> expected;
+      for(std::size_t t = 0; t < triangles.size(); ++t)
+        for(std::size_t u = t + 1; u < triangles.size(); ++u)
+          if((all || selected(t) || selected(u)) && CGAL::do_overlap(box(t), box(u)))
+            expected.insert({t, u});
+      BI::internal::Triangle_grid_3 grid;
+      grid.origin = {{-0.6, -0.6, -0.6}};
+      grid.inverse_cell_size = 1 / cell;
+      for(int a = 0; a < 3; ++a)
+        grid.cells[a] = std::uint32_t(std::min(2.2 / cell, 300.0)); // a part of the soup beyond the last cells
+      const auto visited_with = [&](auto tag) {
+        std::vector<std::vector<std::pair<std::size_t, std::size_t>>> visited(BI::internal::overlapping_pair_parts);
+        EXPECT_TRUE(BI::internal::for_each_overlapping_triangle_pair<decltype(tag)>(
+            points, triangles, grid, all, selected, std::size_t(-1), std::size_t(-1),
+            [&](std::size_t part, std::size_t t, std::size_t u) {
+              EXPECT_LT(t, u);
+              visited[part].push_back({t, u});
+              return false;
+            }));
+        std::vector<std::pair<std::size_t, std::size_t>> all_visited;
+        for(const auto& v : visited)
+          all_visited.insert(all_visited.end(), v.begin(), v.end());
+        return all_visited;
+      };
+      for(const auto& visited : {visited_with(CGAL::Sequential_tag()), visited_with(CGAL::Parallel_if_available_tag())})
+      {
+        const std::set<std::pair<std::size_t, std::size_t>> distinct(visited.begin(), visited.end());
+        EXPECT_EQ(distinct.size(), visited.size()) << "a pair visited twice, cell " << cell;
+        EXPECT_TRUE(distinct == expected) << "cell " << cell << ", all " << all << ": " << distinct.size()
+                                          << " pairs visited, " << expected.size() << " overlap";
+      }
+      EXPECT_GT(expected.size(), all ? 150u : 50u);
+    }
+}
+
+// does_triangle_soup_self_intersect() answers as PMP::does_self_intersect()
+// on the mesh of the soup, and the grid with triangles_intersect() finds
+// the pairs PMP::self_intersections() finds: on closed meshes (a sphere, a
+// torus, fandisk, and a Marching Cubes CSG output whose faces lie on
+// lattice planes), each also with one vertex moved by 0.2 to 4 times the
+// mean edge, or exactly onto a neighbour (a degenerate triangle) or another
+// vertex (two fans touching), or within a lattice plane (coplanar folds).
+TEST(SoupSelfIntersection, SoupAnswersAreThoseOfPMPOnTheMesh)
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  {
+    Mesh sphere, torus, fandisk;
+    BI::make_icosphere(sphere, Point(0, 0, 0), 1, 3);
+    BI::make_torus(torus, Point(0.1, 0.2, 0.3), 1, 0.3, 40, 16);
+    BI::IO::read_closed_triangle_mesh(std::string(BISO_SHARED_DATA_DIR) + "/meshes/fandisk.off", fandisk);
+    meshes.push_back({"sphere", sphere});
+    meshes.push_back({"torus", torus});
+    meshes.push_back({"fandisk", fandisk});
+    const Mesh a = make_box(Point(0, 0, 0), Point(1, 1, 1));
+    const Mesh b = make_box(Point(0.5137, 0.4419, 0.6271), Point(1.7, 1.6, 1.8));
+    meshes.push_back({"box - box", run_csg({a, b}, "A & !B", 16).mesh});
+  }
+  std::mt19937 random(5);
+  std::size_t answers[2] = {0, 0}, degenerate = 0, compared_pairs = 0;
+  for(const auto& [name, mesh] : meshes)
+  {
+    Soup_points original;
+    Soup_triangles triangles;
+    soup_of(mesh, original, triangles);
+    double mean_edge = 0;
+    for(const auto& t : triangles)
+      mean_edge += std::sqrt(CGAL::squared_distance(Point(original[t[0]][0], original[t[0]][1], original[t[0]][2]),
+                                                    Point(original[t[1]][0], original[t[1]][1], original[t[1]][2])));
+    mean_edge /= double(triangles.size());
+    std::uniform_int_distribution<std::size_t> vertex(0, original.size() - 1);
+    std::normal_distribution<double> normal(0, 1);
+    for(int variant = 0; variant < 48; ++variant)
+    {
+      Soup_points points = original;
+      const std::size_t v = vertex(random);
+      if(variant % 8 == 1)
+      {
+        // Onto a neighbour: a degenerate triangle.
+        const auto& t = *std::find_if(triangles.begin(), triangles.end(), [&](const auto& f) {
+          return f[0] == v || f[1] == v || f[2] == v;
+        });
+        points[v] = original[t[0] != v ? t[0] : t[1]];
+      }
+      else if(variant % 8 == 5)
+        points[v] = original[vertex(random)]; // onto another vertex
+      else if(variant % 4 == 2 && name == "box - box")
+      {
+        // Within the lattice plane of one coordinate, which stays exact.
+        const int keep = int(v % 3);
+        for(int a = 0; a < 3; ++a)
+          if(a != keep)
+            points[v][a] += (0.5 + variant % 3) * mean_edge * normal(random);
+      }
+      else if(variant > 0)
+      {
+        const double length = mean_edge * std::pow(20.0, double(variant % 7) / 6) * 0.2;
+        for(int a = 0; a < 3; ++a)
+          points[v][a] += length * normal(random);
+      }
+      Mesh m;
+      PMP::polygon_soup_to_polygon_mesh(points, triangles, m);
+      const bool pmp = PMP::does_self_intersect(m);
+      const std::optional<bool> ours =
+          BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(points, triangles);
+      ASSERT_TRUE(ours.has_value()) << name;
+      EXPECT_EQ(*ours, pmp) << name << " variant " << variant;
+      EXPECT_EQ(BI::internal::does_triangle_soup_self_intersect<CGAL::Parallel_if_available_tag>(points, triangles),
+                ours);
+      ++answers[pmp ? 1 : 0];
+      if(variant == 0)
+        EXPECT_FALSE(pmp) << name;
+
+      // Every intersecting pair, when no triangle is degenerate (PMP then
+      // reports it alone).
+      std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pmp_pairs;
+      PMP::self_intersections(m, std::back_inserter(pmp_pairs));
+      std::set<std::pair<std::size_t, std::size_t>> expected;
+      bool has_degenerate = false;
+      for(const auto& [f, g] : pmp_pairs)
+      {
+        has_degenerate = has_degenerate || f == g;
+        expected.insert({(std::min)(std::size_t(f), std::size_t(g)), (std::max)(std::size_t(f), std::size_t(g))});
+      }
+      if(has_degenerate)
+      {
+        ++degenerate;
+        continue;
+      }
+      std::vector<std::vector<std::pair<std::size_t, std::size_t>>> found(BI::internal::overlapping_pair_parts);
+      BI::internal::Triangle_grid_3 grid;
+      CGAL::Bbox_3 box;
+      for(const auto& p : points)
+        box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+      for(int a = 0; a < 3; ++a)
+      {
+        grid.origin[a] = box.min(a);
+        grid.cells[a] = std::uint32_t((box.max(a) - box.min(a)) / (2 * mean_edge)) + 1;
+      }
+      grid.inverse_cell_size = 1 / (2 * mean_edge);
+      BI::internal::for_each_overlapping_triangle_pair<CGAL::Sequential_tag>(
+          points, triangles, grid, true, [](std::size_t) { return true; }, std::size_t(-1), std::size_t(-1),
+          [&](std::size_t part, std::size_t t, std::size_t u) {
+            if(BI::internal::triangles_intersect(points, triangles[t], triangles[u]))
+              found[part].push_back({t, u});
+            return false;
+          });
+      std::set<std::pair<std::size_t, std::size_t>> ours_pairs;
+      for(const auto& f : found)
+        ours_pairs.insert(f.begin(), f.end());
+      EXPECT_TRUE(ours_pairs == expected) << name << " variant " << variant << ": " << ours_pairs.size() << " pairs, PMP "
+                                          << expected.size();
+      compared_pairs += expected.size();
+    }
+  }
+  // Both answers, many times; degenerate triangles and pairs compared.
+  EXPECT_GT(answers[0], 50u);
+  EXPECT_GT(answers[1], 50u);
+  EXPECT_GT(degenerate, 10u);
+  EXPECT_GT(compared_pairs, 200u);
+}
+
+// Triangles across the whole box (a grid of a few cells, every pair in
+// them): left to PMP, not compared pair by pair.
+TEST(SoupSelfIntersection, TrianglesTooUnevenForTheGridAreLeftToTheCaller)
+{
+  Soup_points points;
+  Soup_triangles triangles;
+  for(std::uint32_t t = 0; t < 2000; ++t)
+  {
+    const double z = 1e-3 * t;
+    points.push_back({{0, 0, z}});
+    points.push_back({{1, 0.001 * t, z}});
+    points.push_back({{0.5, 1, z + 0.5}});
+    triangles.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
+  }
+  EXPECT_FALSE(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(points, triangles).has_value());
 }
 
 // A face passing 1e-7 r from a lattice point: three edge points within

@@ -1,0 +1,114 @@
+// Copyright (c) 2026 Boolean Isosurfacing for CGAL contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_DOES_TRIANGLE_SOUP_SELF_INTERSECT_H
+#define CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_DOES_TRIANGLE_SOUP_SELF_INTERSECT_H
+
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Overlapping_triangle_pairs.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Triangle_pair_intersection.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace CGAL {
+namespace Boolean_isosurfacing {
+namespace internal {
+
+/// Whether a 2-manifold triangle soup (each edge in two triangles, each
+/// vertex's triangles one fan: check_manifold_vertices()) intersects itself,
+/// as `PMP::does_self_intersect()` decides it on the mesh made of the soup:
+/// a degenerate triangle intersects itself; two triangles intersect if they
+/// have a common point other than their shared vertices and edge
+/// (triangles_intersect(); in a 2-manifold soup two triangles share a vertex
+/// or an edge by index exactly when their faces do in the mesh).
+///
+/// The pairs of overlapping boxes are found on a grid of cells twice the
+/// mean triangle's box (for_each_overlapping_triangle_pair()); no mesh is
+/// built.  `std::nullopt` when the triangles are too unevenly sized for that
+/// grid (the caller asks PMP on a mesh).  Stops at the first intersection.
+template <typename ConcurrencyTag, typename Triangle>
+std::optional<bool> does_triangle_soup_self_intersect(const std::vector<std::array<double, 3>>& points,
+                                                      const std::vector<Triangle>& triangles)
+{
+  typedef Exact_predicates_inexact_constructions_kernel::Point_3 Point;
+  if(triangles.empty())
+    return false;
+  if(triangles.size() > (std::size_t(1) << 32))
+    return std::nullopt;
+  const auto point = [&](std::size_t v) { return Point(points[v][0], points[v][1], points[v][2]); };
+
+  std::atomic<bool> degenerate(false);
+  const std::size_t parts = overlapping_pair_parts;
+  concurrent_for<ConcurrencyTag>(parts, [&](std::size_t part) {
+    for(std::size_t t = triangles.size() * part / parts;
+        t < triangles.size() * (part + 1) / parts && !degenerate.load(std::memory_order_relaxed); ++t)
+      if(CGAL::collinear(point(triangles[t][0]), point(triangles[t][1]), point(triangles[t][2])))
+        degenerate = true;
+  });
+  if(degenerate)
+    return true;
+
+  // The grid: the soup's box in cells twice the mean of the triangles'
+  // longest box sides (a triangle meets about 3 cells), coarser if that is
+  // more cells than the grid allows.
+  CGAL::Bbox_3 box;
+  double extents = 0;
+  for(const Triangle& t : triangles)
+  {
+    CGAL::Bbox_3 b;
+    for(int v = 0; v < 3; ++v)
+    {
+      const std::array<double, 3>& p = points[std::size_t(t[v])];
+      b += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+    }
+    extents += (std::max)({b.xmax() - b.xmin(), b.ymax() - b.ymin(), b.zmax() - b.zmin()});
+    box += b;
+  }
+  double cell_size = 2 * extents / double(triangles.size());
+  Triangle_grid_3 grid;
+  for(;;)
+  {
+    double cells = 1;
+    for(int a = 0; a < 3; ++a)
+      cells *= std::floor((box.max(a) - box.min(a)) / cell_size) + 1;
+    if(cells <= double(Triangle_grid_3::max_cells))
+      break;
+    cell_size *= 1.25;
+  }
+  for(int a = 0; a < 3; ++a)
+  {
+    grid.origin[a] = box.min(a);
+    grid.cells[a] = std::uint32_t(std::floor((box.max(a) - box.min(a)) / cell_size) + 1);
+  }
+  grid.inverse_cell_size = 1 / cell_size;
+
+  // Budgets well above what triangles of about a cell need (3-4 listings
+  // and a few tens of pairs of boxes a triangle).
+  const std::size_t n = triangles.size();
+  std::atomic<bool> found(false);
+  const bool decided = for_each_overlapping_triangle_pair<ConcurrencyTag>(
+      points, triangles, grid, true, [](std::size_t) { return true; }, 16 * n + 4096, 128 * n + (std::size_t(1) << 20),
+      [&](std::size_t, std::size_t t, std::size_t u) {
+        if(!triangles_intersect(points, triangles[t], triangles[u]))
+          return false;
+        found = true;
+        return true;
+      });
+  if(!decided)
+    return std::nullopt;
+  return found.load();
+}
+
+} // namespace internal
+} // namespace Boolean_isosurfacing
+} // namespace CGAL
+
+#endif // CGAL_BOOLEAN_ISOSURFACING_3_INTERNAL_DOES_TRIANGLE_SOUP_SELF_INTERSECT_H
