@@ -2059,6 +2059,26 @@ TEST(SoupSelfIntersection, SoupAnswersAreThoseOfPMPOnTheMesh)
   EXPECT_GT(compared_pairs, 200u);
 }
 
+// A degenerate triangle intersects itself, as PMP reports it.  (In a
+// closed soup a degenerate triangle also makes two of its neighbours meet:
+// its middle vertex lies on the side of the one across its longest side.)
+TEST(SoupSelfIntersection, ADegenerateTriangleIntersectsItselfAsInPMP)
+{
+  const Soup_points points{{{0, 0, 0}}, {{2, 0, 0}}, {{0, 2, 0}}, {{0, 0, 2}}, {{1, 0, 0}}, {{1, 0, 0}}};
+  for(const Soup_triangles& triangles : {Soup_triangles{{{0, 1, 4}}}, Soup_triangles{{{0, 4, 5}}}})
+  {
+    Mesh m;
+    PMP::polygon_soup_to_polygon_mesh(points, triangles, m);
+    ASSERT_EQ(num_faces(m), 1u);
+    EXPECT_TRUE(PMP::does_self_intersect(m));
+    EXPECT_EQ(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(points, triangles),
+              std::optional<bool>(true));
+  }
+  const Soup_triangles tetrahedron{{{0, 2, 1}}, {{0, 1, 3}}, {{0, 3, 2}}, {{1, 2, 3}}};
+  EXPECT_EQ(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(points, tetrahedron),
+            std::optional<bool>(false));
+}
+
 // Triangles across the whole box (a grid of a few cells, every pair in
 // them): left to PMP, not compared pair by pair.
 TEST(SoupSelfIntersection, TrianglesTooUnevenForTheGridAreLeftToTheCaller)

@@ -13,12 +13,12 @@
 // there.  The other triangles are not checked: they come out of the strict
 // test as before (features.md, "Why the guarantees stay").
 //
-// Cost: two passes over the triangles (the weak ones, then every triangle
-// against the weak ones listed in the lattice cells its box meets), and
-// statically filtered orientations on the pairs whose boxes meet (in 2D
-// where the points share a lattice plane): about 10 pairs a weak triangle,
-// 9-16 ms on one thread for the moved copies at 128 cells (2,500-3,500
-// weak triangles).
+// Cost: two passes over the triangles (marking the lattice cells the weak
+// ones meet, then listing every triangle in the marked cells its box meets:
+// Overlapping_triangle_pairs.h), and the exact pair test of
+// Triangle_pair_intersection.h on the pairs whose boxes meet, one of them
+// weak: about 10 pairs a weak triangle, 9-16 ms on one thread for the
+// moved copies at 128 cells (2,500-3,500 weak triangles).
 
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Overlapping_triangle_pairs.h>
