@@ -778,6 +778,23 @@ TEST_F(CsgTool, OverlappingShellsOfOneInputAreNamed)
   EXPECT_NE(r.err.find("two_shells.off (A) has overlapping shells"), std::string::npos) << r.err;
   const Result clean = run(b + " " + b + " --op union --cells 16 --check-inputs");
   EXPECT_EQ(clean.err.find("overlapping"), std::string::npos) << clean.err;
+  EXPECT_EQ(clean.err.find("intersects itself"), std::string::npos) << clean.err;
+  // One shell folded through itself: a box whose corner (1, 1, 1) is moved
+  // beyond its face x = 0.  Only --check-inputs tests for that.
+  std::ostringstream folded;
+  folded << "OFF\n8 12 0\n";
+  for(int k = 0; k < 7; ++k)
+    folded << (k & 1) << ' ' << ((k >> 1) & 1) << ' ' << ((k >> 2) & 1) << "\n";
+  folded << "-0.2 0.5 0.5\n";
+  for(const auto& f : faces)
+    folded << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << "\n";
+  const std::string c = write("folded.off", folded.str());
+  const Result unchecked = run(c + " " + b + " --op union --cells 16");
+  ASSERT_EQ(unchecked.status, 0) << unchecked.err;
+  EXPECT_EQ(unchecked.err.find("intersects itself"), std::string::npos) << unchecked.err;
+  const Result checked = run(c + " " + b + " --op union --cells 16 --check-inputs");
+  ASSERT_EQ(checked.status, 0) << checked.err;
+  EXPECT_NE(checked.err.find("folded.off (A) intersects itself"), std::string::npos) << checked.err;
 }
 
 // A = [0,2]^3 minus B = A moved by a non-lattice offset: the exact result has

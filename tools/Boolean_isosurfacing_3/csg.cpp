@@ -20,6 +20,7 @@
 #include "cli.h"
 #include "process_start.h"
 #include "csg_options.h"
+#include "self_intersection.h"
 
 #include <CGAL/Boolean_isosurfacing_3/Boolean_expression.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/boolean_isosurface_files.h>
@@ -676,7 +677,14 @@ void overlap_warnings(Tool& tool, const Options& options, const std::vector<Soup
     {
       continue; // non-manifold vertices: not checked (the classification counts crossings anyway)
     }
-    const BI::Overlapping_shells_report report = BI::find_overlapping_shells(mesh, options.check_inputs);
+    // The self-intersection test on the soup (biso_tools::soup_self_intersects()), not PMP's
+    // on the mesh that find_overlapping_shells() would run: 3-4x faster.
+    BI::Overlapping_shells_report report = BI::find_overlapping_shells(mesh, false);
+    if(options.check_inputs)
+    {
+      report.checked_self_intersection = true;
+      report.self_intersecting = biso_tools::soup_self_intersects(meshes[i], options.parallel, &mesh);
+    }
     if(!report.overlaps())
       continue;
     std::string text = options.files[i] + " (" + variable_name(i) + ")";

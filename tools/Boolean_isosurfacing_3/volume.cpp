@@ -19,17 +19,16 @@
 #include "cli.h"
 #include "process_start.h"
 #include "kernels.h"
+#include "self_intersection.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Mesh_readers/check_manifold_vertices.h>
-#include <CGAL/Boolean_isosurfacing_3/internal/does_triangle_soup_self_intersect.h>
 #include <CGAL/Boolean_isosurfacing_3/surveyor_volume.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
@@ -76,34 +75,12 @@ double relative_error(double value, double reference)
   return reference == 0 ? std::abs(value) : std::abs(value - reference) / std::abs(reference);
 }
 
-bool does_self_intersect(const Mesh& mesh, bool parallel)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(parallel)
-    return PMP::does_self_intersect<CGAL::Parallel_tag>(mesh);
-#endif
-  (void)parallel;
-  return PMP::does_self_intersect<CGAL::Sequential_tag>(mesh);
-}
-
-// PMP's answer on the mesh of a closed soup, from the arrays when the
-// triangles suit the grid (30x faster on 1.6M Marching Cubes triangles).
-// A soup with a non-manifold vertex has no mesh, and is refused as before.
+// PMP's answer on the mesh of a closed soup.  A soup with a non-manifold
+// vertex has no mesh, and is refused as before.
 bool does_self_intersect(const BI::Triangle_soup_3& soup, bool parallel)
 {
   BI::internal::check_manifold_vertices(soup.triangles, soup.points.size());
-  std::optional<bool> answer;
-#ifdef CGAL_LINKED_WITH_TBB
-  if(parallel)
-    answer = BI::internal::does_triangle_soup_self_intersect<CGAL::Parallel_tag>(soup.points, soup.triangles);
-  else
-#endif
-    answer = BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(soup.points, soup.triangles);
-  if(answer)
-    return *answer;
-  Mesh mesh;
-  BI::IO::triangle_soup_to_mesh(soup, mesh);
-  return does_self_intersect(mesh, parallel);
+  return biso_tools::soup_self_intersects(soup, parallel);
 }
 
 // The JSON record of one file.
