@@ -2094,6 +2094,13 @@ TEST(SoupSelfIntersection, TrianglesTooUnevenForTheGridAreLeftToTheCaller)
     triangles.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
   }
   EXPECT_FALSE(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(points, triangles).has_value());
+  // Sides and extents that overflow to infinity (they once made the cell
+  // size search loop forever).
+  const Soup_points huge{{{-1e308, 0, 0}}, {{1e308, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};
+  const Soup_triangles tetrahedron{{{0, 2, 1}}, {{0, 1, 3}}, {{0, 3, 2}}, {{1, 2, 3}}};
+  EXPECT_FALSE(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(huge, tetrahedron).has_value());
+  const Soup_points wide{{{0, 0, 0}}, {{1e308, 0, 0}}, {{0, 1e308, 0}}, {{0, 0, 1e308}}};
+  EXPECT_FALSE(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(wide, tetrahedron).has_value());
 }
 
 // A face passing 1e-7 r from a lattice point: three edge points within

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -74,6 +75,13 @@ std::optional<bool> does_triangle_soup_self_intersect(const std::vector<std::arr
     box += b;
   }
   double cell_size = 3 * extents / double(triangles.size());
+  // Coordinates near the largest double overflow the extents or the box's
+  // sides to infinity: no grid, PMP (whose exact predicates do not overflow).
+  for(int a = 0; a < 3; ++a)
+    if(!std::isfinite(box.max(a) - box.min(a)))
+      return std::nullopt;
+  if(!std::isfinite(cell_size))
+    return std::nullopt;
   Triangle_grid_3 grid;
   for(;;)
   {
