@@ -2094,6 +2094,26 @@ TEST(SoupSelfIntersection, TrianglesTooUnevenForTheGridAreLeftToTheCaller)
     triangles.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
   }
   EXPECT_FALSE(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(points, triangles).has_value());
+  // One triangle across a grid of 10^7 small cells is counted, not listed.
+  {
+    Soup_points few;
+    Soup_triangles small;
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for(std::uint32_t t = 0; t < 20000; ++t)
+    {
+      const double x = unit(random), y = unit(random), z = unit(random);
+      few.push_back({{x, y, z}});
+      few.push_back({{x + 1e-3, y, z}});
+      few.push_back({{x, y + 1e-3, z}});
+      small.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
+    }
+    few.push_back({{0, 0, 0}});
+    few.push_back({{1, 0, 1}});
+    few.push_back({{0, 1, 1}});
+    small.push_back({{60000, 60001, 60002}});
+    EXPECT_FALSE(BI::internal::does_triangle_soup_self_intersect<CGAL::Sequential_tag>(few, small).has_value());
+  }
   // Sides and extents that overflow to infinity (they once made the cell
   // size search loop forever).
   const Soup_points huge{{{-1e308, 0, 0}}, {{1e308, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};

@@ -120,8 +120,7 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
               marked[grid.index(i, j, k)] = true;
       }
   }
-  const auto for_each_listed_cell = [&](std::size_t t, const auto& f) {
-    const Triangle_cell_box c = triangle_cell_box(points, triangles[t], grid);
+  const auto for_each_listed_cell = [&](const Triangle_cell_box& c, const auto& f) {
     for(std::size_t k = c.lo[2]; k <= c.hi[2]; ++k)
       for(std::size_t j = c.lo[1]; j <= c.hi[1]; ++j)
         for(std::size_t i = c.lo[0]; i <= c.hi[0]; ++i)
@@ -133,8 +132,9 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
   };
 
   // The keys (cell << 32 | triangle), by ranges of triangles: one vector a
-  // range, in triangle order.  The total is watched as they grow, so that a
-  // few triangles across the whole grid stop the listing early.
+  // range, in triangle order.  The total is watched as they grow, and each
+  // triangle's cells are counted before they are listed: a triangle across
+  // the whole grid would list up to 2^26 keys (512 MB).
   typedef std::vector<std::uint64_t, Default_init_allocator<std::uint64_t>> Keys;
   const std::size_t parts = overlapping_pair_parts;
   const auto range = [&](std::size_t part, std::size_t n) {
@@ -142,23 +142,37 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
   };
   std::vector<Keys> listed(parts);
   std::atomic<std::size_t> total_listed(0);
+  std::atomic<bool> over_budget(false);
   concurrent_for<ConcurrencyTag>(parts, [&](std::size_t part) {
     Keys& out = listed[part];
     const std::array<std::size_t, 2> r = range(part, triangles.size());
-    out.reserve(4 * (r[1] - r[0]));
+    if(all_selected)
+      out.reserve(4 * (r[1] - r[0])); // about 2.4 cells a triangle; a selection lists few
     std::size_t reported = 0;
     for(std::size_t t = r[0]; t < r[1]; ++t)
     {
-      for_each_listed_cell(t, [&](std::size_t cell) { out.push_back((std::uint64_t(cell) << 32) | t); });
+      const Triangle_cell_box c = triangle_cell_box(points, triangles[t], grid);
+      const std::size_t cells = std::size_t(c.hi[0] - c.lo[0] + 1) * std::size_t(c.hi[1] - c.lo[1] + 1) *
+                                std::size_t(c.hi[2] - c.lo[2] + 1); // all of them listed at most
+      if(over_budget.load(std::memory_order_relaxed) ||
+         total_listed.load(std::memory_order_relaxed) + (out.size() - reported) + cells > max_listed)
+      {
+        over_budget = true;
+        return;
+      }
+      for_each_listed_cell(c, [&](std::size_t cell) { out.push_back((std::uint64_t(cell) << 32) | t); });
       if(out.size() - reported >= 4096 || t + 1 == r[1])
       {
         if((total_listed += out.size() - reported) > max_listed)
+        {
+          over_budget = true;
           return;
+        }
         reported = out.size();
       }
     }
   });
-  if(total_listed > max_listed)
+  if(over_budget)
     return false;
 
   // A stable LSD radix sort on the cell bits: within a cell the triangles
