@@ -2027,16 +2027,10 @@ TEST(SoupSelfIntersection, SoupAnswersAreThoseOfPMPOnTheMesh)
         continue;
       }
       std::vector<std::vector<std::pair<std::size_t, std::size_t>>> found(BI::internal::overlapping_pair_parts);
-      BI::internal::Triangle_grid_3 grid;
       CGAL::Bbox_3 box;
       for(const auto& p : points)
         box += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
-      for(int a = 0; a < 3; ++a)
-      {
-        grid.origin[a] = box.min(a);
-        grid.cells[a] = std::uint32_t((box.max(a) - box.min(a)) / (2 * mean_edge)) + 1;
-      }
-      grid.inverse_cell_size = 1 / (2 * mean_edge);
+      const BI::internal::Triangle_grid_3 grid = BI::internal::Triangle_grid_3::covering(box, 2 * mean_edge);
       BI::internal::for_each_overlapping_triangle_pair<CGAL::Sequential_tag>(
           points, triangles, grid, true, [](std::size_t) { return true; }, std::size_t(-1), std::size_t(-1),
           [&](std::size_t part, std::size_t t, std::size_t u) {

@@ -57,6 +57,29 @@ struct Triangle_grid_3
   }
 
   std::size_t index(std::size_t i, std::size_t j, std::size_t k) const { return i + cells[0] * (j + cells[1] * k); }
+
+  /// The number of cells of side `cell_size` from the low corner of `box`
+  /// that cover it (a double: it may be beyond any integer type).
+  static double number_of_cells_covering(const CGAL::Bbox_3& box, double cell_size)
+  {
+    double n = 1;
+    for(int a = 0; a < 3; ++a)
+      n *= std::floor((box.max(a) - box.min(a)) / cell_size) + 1;
+    return n;
+  }
+
+  /// That grid.  \pre number_of_cells_covering(box, cell_size) <= max_cells
+  static Triangle_grid_3 covering(const CGAL::Bbox_3& box, double cell_size)
+  {
+    Triangle_grid_3 grid;
+    for(int a = 0; a < 3; ++a)
+    {
+      grid.origin[a] = box.min(a);
+      grid.cells[a] = std::uint32_t(std::floor((box.max(a) - box.min(a)) / cell_size) + 1);
+    }
+    grid.inverse_cell_size = 1 / cell_size;
+    return grid;
+  }
 };
 
 /// A triangle's bounding box and the cells it meets, from `lo` to `hi`.
@@ -81,6 +104,16 @@ Triangle_cell_box triangle_cell_box(const std::vector<std::array<double, 3>>& po
     c.hi[a] = grid.cell_of(a, c.box.max(a));
   }
   return c;
+}
+
+/// Calls `f(cell)` for each cell of `grid` that `c` meets.
+template <typename Function>
+void for_each_cell(const Triangle_cell_box& c, const Triangle_grid_3& grid, const Function& f)
+{
+  for(std::size_t k = c.lo[2]; k <= c.hi[2]; ++k)
+    for(std::size_t j = c.lo[1]; j <= c.hi[1]; ++j)
+      for(std::size_t i = c.lo[0]; i <= c.hi[0]; ++i)
+        f(grid.index(i, j, k));
 }
 
 /// The number of parts the visits are split into: `visit(part, t, u)` is
@@ -112,24 +145,9 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
     marked.assign(grid.number_of_cells(), false);
     for(std::size_t t = 0; t < triangles.size(); ++t)
       if(selected(t))
-      {
-        const Triangle_cell_box c = triangle_cell_box(points, triangles[t], grid);
-        for(std::size_t k = c.lo[2]; k <= c.hi[2]; ++k)
-          for(std::size_t j = c.lo[1]; j <= c.hi[1]; ++j)
-            for(std::size_t i = c.lo[0]; i <= c.hi[0]; ++i)
-              marked[grid.index(i, j, k)] = true;
-      }
+        for_each_cell(triangle_cell_box(points, triangles[t], grid), grid,
+                      [&](std::size_t cell) { marked[cell] = true; });
   }
-  const auto for_each_listed_cell = [&](const Triangle_cell_box& c, const auto& f) {
-    for(std::size_t k = c.lo[2]; k <= c.hi[2]; ++k)
-      for(std::size_t j = c.lo[1]; j <= c.hi[1]; ++j)
-        for(std::size_t i = c.lo[0]; i <= c.hi[0]; ++i)
-        {
-          const std::size_t cell = grid.index(i, j, k);
-          if(all_selected || marked[cell])
-            f(cell);
-        }
-  };
 
   // The keys (cell << 32 | triangle), by ranges of triangles: one vector a
   // range, in triangle order.  The total is watched as they grow, and each
@@ -160,7 +178,10 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
         over_budget = true;
         return;
       }
-      for_each_listed_cell(c, [&](std::size_t cell) { out.push_back((std::uint64_t(cell) << 32) | t); });
+      for_each_cell(c, grid, [&](std::size_t cell) {
+        if(all_selected || marked[cell])
+          out.push_back((std::uint64_t(cell) << 32) | t);
+      });
       if(out.size() - reported >= 4096 || t + 1 == r[1])
       {
         if((total_listed += out.size() - reported) > max_listed)

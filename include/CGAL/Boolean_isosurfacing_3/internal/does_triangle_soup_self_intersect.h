@@ -82,22 +82,9 @@ std::optional<bool> does_triangle_soup_self_intersect(const std::vector<std::arr
       return std::nullopt;
   if(!std::isfinite(cell_size))
     return std::nullopt;
-  Triangle_grid_3 grid;
-  for(;;)
-  {
-    double cells = 1;
-    for(int a = 0; a < 3; ++a)
-      cells *= std::floor((box.max(a) - box.min(a)) / cell_size) + 1;
-    if(cells <= double(Triangle_grid_3::max_cells))
-      break;
+  while(Triangle_grid_3::number_of_cells_covering(box, cell_size) > double(Triangle_grid_3::max_cells))
     cell_size *= 1.25;
-  }
-  for(int a = 0; a < 3; ++a)
-  {
-    grid.origin[a] = box.min(a);
-    grid.cells[a] = std::uint32_t(std::floor((box.max(a) - box.min(a)) / cell_size) + 1);
-  }
-  grid.inverse_cell_size = 1 / cell_size;
+  const Triangle_grid_3 grid = Triangle_grid_3::covering(box, cell_size);
 
   // Budgets well above what triangles of about a cell need (3-4 listings
   // and a few tens of pairs of boxes a triangle).
