@@ -774,6 +774,79 @@ TEST(Reconstruct, Output_is_deterministic)
   EXPECT_EQ(a.triangles, b.triangles);
 }
 
+// The parallel field (k-NN queries and plane fits on TBB's threads) and the
+// parallel traversal (breadth first, each level's lattice points evaluated
+// concurrently) give the sequential output bit for bit, and the same counts:
+// with and without normals (the input normals' planes and sharp features,
+// or PCA planes oriented by a spanning tree), noisy samples, Hoppe's f alone
+// (undefined points, skipped cubes), and finer cells.  (The walk from the
+// samples, for cells finer than the zero set's offset, is compared in
+// test_contour_traversal.)
+TEST(Reconstruct, Parallel_runs_give_the_sequential_output)
+{
+  const Mesh mechpart = load_mesh("mechpart_hoppe.off");
+  Mesh torus;
+  BI::make_torus(torus, Point_3(0, 0, 0), 1.0, 0.35, 120, 48);
+  const Samples sharp = sample_mesh(mechpart, 20000, 3);
+  const Samples noisy = sample_mesh(torus, 8000, 4, 0.01);
+  Samples cactus;
+  std::vector<Vector_3> no_normals;
+  EXPECT_FALSE(BI::IO::read_pts(data_dir + "/points/cactus.pts", cactus.points, no_normals));
+  const auto run = [](const auto& tag, const Samples& s, bool normals, bool consistent, double cells) {
+    typedef std::decay_t<decltype(tag)> Tag;
+    Reconstruction r;
+    const auto np = BI::parameters::consistent_signs(consistent)
+                        .point_map(CGAL::make_property_map(s.points))
+                        .normal_map(CGAL::make_property_map(s.normals));
+    std::vector<std::size_t> indices(s.points.size());
+    for(std::size_t i = 0; i < indices.size(); ++i)
+      indices[i] = i;
+    const auto contour = [&](const auto& field_np) {
+      const BI::Tangent_plane_signed_distance_3<K, Tag> field(indices, field_np);
+      const BI::Regular_lattice_3 lattice =
+          cells > 0 ? BI::contouring_lattice(field, BI::parameters::cells_along_longest_side(std::size_t(cells)))
+                    : BI::contouring_lattice(field);
+      r.report = BI::contour_signed_distance<Tag>(lattice, field, r.points, r.triangles, field_np);
+    };
+    if(normals)
+      contour(np);
+    else
+      contour(BI::parameters::consistent_signs(consistent).point_map(CGAL::make_property_map(s.points)));
+    return r;
+  };
+  struct Case
+  {
+    const Samples* samples;
+    bool normals, consistent;
+    double cells;
+    const char* name;
+  };
+  const std::vector<Case> cases{{&sharp, true, true, 0, "mechpart, normals"},
+                                {&sharp, false, true, 0, "mechpart, no normals"},
+                                {&noisy, false, true, 0, "noisy torus"},
+                                {&cactus, false, false, 0, "cactus.pts, Hoppe's f alone"},
+                                {&noisy, true, true, 300, "noisy torus, finer cells"}};
+  for(const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const Reconstruction a = run(CGAL::Sequential_tag(), *c.samples, c.normals, c.consistent, c.cells);
+    const Reconstruction b = run(CGAL::Parallel_if_available_tag(), *c.samples, c.normals, c.consistent, c.cells);
+    ASSERT_GT(a.triangles.size(), 5000u);
+    if(!c.consistent)
+      EXPECT_GT(a.report.undefined_points, 0u); // Hoppe's f: undefined far from the samples
+    EXPECT_EQ(a.points, b.points);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.report.field_evaluations, b.report.field_evaluations);
+    EXPECT_EQ(a.report.undefined_points, b.report.undefined_points);
+    EXPECT_EQ(a.report.visited_cubes, b.report.visited_cubes);
+    EXPECT_EQ(a.report.surface_cubes, b.report.surface_cubes);
+    EXPECT_EQ(a.report.skipped_cubes, b.report.skipped_cubes);
+    EXPECT_EQ(a.report.discontinuous_cubes, b.report.discontinuous_cubes);
+    EXPECT_EQ(a.report.walk_seeds, b.report.walk_seeds);
+    EXPECT_EQ(a.report.feature_creases, b.report.feature_creases);
+  }
+}
+
 // A plate thinner than a neighbourhood: samples on a grid of step 0.02 on
 // all six faces of [0,1] x [0,1] x [0,0.03].  The 15 nearest samples of a
 // point of the top face reach 0.04 away, so 5 of them are on the bottom face; a
@@ -974,9 +1047,14 @@ TEST(Hoppe, Cactus_with_hoppes_f_alone_is_open_only_at_its_unsampled_base)
   ASSERT_EQ(points.size(), 3318u);
   Reconstruction r = reconstruct(points, BI::parameters::consistent_signs(false));
   EXPECT_FALSE(r.report.consistent_signs);
-  // Hoppe's f leaves one closed bubble in a concave region (where the nearest
+  // Hoppe's f leaves closed bubbles in a concave region (where the nearest
   // tangent plane is not the one that matters), smaller than rho: removed.
-  EXPECT_EQ(r.report.removed_closed_components, 1u);
+  // One or two: cactus.pts' coordinates are quantized, so some lattice points
+  // have two nearest centres at the same distance, and which one the kd-tree
+  // returns (its leaf size) decides whether a second bubble appears.
+  const std::size_t bubbles = r.report.removed_closed_components;
+  EXPECT_GE(bubbles, 1u);
+  EXPECT_LE(bubbles, 2u);
   Topology t = topology(r.mesh);
   EXPECT_EQ(t.components, 1u);
   EXPECT_EQ(t.border_cycles, 1u);
@@ -984,8 +1062,8 @@ TEST(Hoppe, Cactus_with_hoppes_f_alone_is_open_only_at_its_unsampled_base)
   const Topology with_bubble = topology(
     reconstruct(points, BI::parameters::minimum_closed_component_size(0.0, BI::parameters::consistent_signs(false)))
       .mesh);
-  EXPECT_EQ(with_bubble.components, 2u);
-  EXPECT_EQ(with_bubble.euler, 3);
+  EXPECT_EQ(with_bubble.components, 1u + bubbles);
+  EXPECT_EQ(with_bubble.euler, 1 + 2 * int(bubbles)); // the disk and spheres
   std::vector<Mesh::Halfedge_index> cycles;
   PMP::extract_boundary_cycles(r.mesh, std::back_inserter(cycles));
   ASSERT_EQ(cycles.size(), 1u);

@@ -117,6 +117,17 @@ TEST(Traversal, Cells_finer_than_the_offset_of_the_zero_set_still_give_the_surfa
             << report.number_of_faces << " triangles, " << report.walk_seeds << " walk seeds" << std::endl;
   EXPECT_GE(report.walk_seeds, 1u);
   EXPECT_FALSE(report.empty_output);
+  // The parallel traversal (breadth first from the samples' cubes) gives
+  // the same surface, walk included.
+  std::vector<Point_3> parallel_points;
+  std::vector<Triangle> parallel_triangles;
+  const BI::Contouring_statistics parallel_report = BI::contour_signed_distance<CGAL::Parallel_if_available_tag>(
+    BI::contouring_lattice(field, BI::parameters::cell_size(cell)), field, parallel_points, parallel_triangles,
+    BI::parameters::cell_size(cell));
+  EXPECT_EQ(parallel_points, points);
+  EXPECT_EQ(parallel_triangles, triangles);
+  EXPECT_EQ(parallel_report.walk_seeds, report.walk_seeds);
+  EXPECT_EQ(parallel_report.field_evaluations, report.field_evaluations);
   ASSERT_TRUE(PMP::is_polygon_soup_a_polygon_mesh(triangles));
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);

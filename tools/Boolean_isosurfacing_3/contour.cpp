@@ -183,7 +183,9 @@ void check_cell_size(double cell, double default_cell, std::size_t number_of_poi
   }
 }
 
-typedef BI::Tangent_plane_signed_distance_3<K> Field;
+// Parallel where TBB is: --threads and --sequential bound it (the field is
+// the same on any number of threads).
+typedef BI::Tangent_plane_signed_distance_3<K, CGAL::Parallel_if_available_tag> Field;
 
 struct Samples
 {

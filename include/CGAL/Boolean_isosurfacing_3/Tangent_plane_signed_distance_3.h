@@ -47,6 +47,7 @@
 //     2018, internal/Contouring/Winding_number.h), which decides the sign of
 //     `consistent_value()` where Hoppe's nearest plane is contradicted.
 
+#include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Contouring/Winding_number.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/seconds_since.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
@@ -89,6 +90,11 @@ namespace Boolean_isosurfacing {
  *
  * \tparam GeomTraits a CGAL kernel (`Point_3`, `Vector_3`, `FT` convertible
  *         to double); default `CGAL::Epick`.
+ * \tparam ConcurrencyTag `CGAL::Sequential_tag` (default) or
+ *         `CGAL::Parallel_tag`: with the latter the k-NN queries and the
+ *         plane fits of the construction run on TBB's threads.  The field is
+ *         the same bit for bit (each sample's neighbours and plane are its
+ *         own); the orientation, a propagation, stays sequential.
  *
  * Named parameters of the constructor (its reference lists them; the
  * defaults are explained here):
@@ -118,7 +124,8 @@ namespace Boolean_isosurfacing {
  *
  * \cgalModels{ContouringField_3}
  */
-template <typename GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel>
+template <typename GeomTraits = CGAL::Exact_predicates_inexact_constructions_kernel,
+          typename ConcurrencyTag = CGAL::Sequential_tag>
 class Tangent_plane_signed_distance_3
 {
 public:
@@ -143,6 +150,10 @@ private:
   typedef CGAL::Distance_adapter<std::size_t, Index_point_map, CGAL::Euclidean_distance<Base_search_traits>>
     Distance;
   typedef CGAL::Sliding_midpoint<Search_traits> Splitter;
+  // Leaves of 30 points instead of CGAL's default 10: the k-NN of all samples
+  // (k = 15) and the nearest-centre queries of the lattice are 25-30 % faster
+  // (10K and 60K samples of a sphere; 20 and 40 are in between).
+  static constexpr unsigned int leaf_size = 30;
   typedef CGAL::Kd_tree<Search_traits, Splitter, CGAL::Tag_true> Tree;
   typedef CGAL::Orthogonal_k_neighbor_search<Search_traits, Distance, Splitter, Tree> Neighbor_search;
 
@@ -446,7 +457,7 @@ private:
     const auto start = std::chrono::steady_clock::now();
     m_point_map = Index_point_map(m_points.data());
     m_point_tree = std::make_unique<Tree>(boost::counting_iterator<std::size_t>(0),
-                                          boost::counting_iterator<std::size_t>(m_points.size()), Splitter(),
+                                          boost::counting_iterator<std::size_t>(m_points.size()), Splitter(leaf_size),
                                           Search_traits(m_point_map));
     m_point_tree->build(); // now, not lazily: queries are then read-only
     const std::size_t n = m_points.size();
@@ -454,26 +465,30 @@ private:
     m_kth_distance.assign(n, 0);
     m_nearest_distance.assign(n, 0);
     const Distance distance(m_point_map);
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      Neighbor_search search(*m_point_tree, m_points[i], static_cast<unsigned int>(m_k), 0, true, distance);
-      std::size_t j = 0;
-      // The result is sorted by distance; put i itself first even among
-      // duplicates so that neighbors(i)[0] == i always.
-      m_neighbors[i * m_k] = i;
-      j = 1;
-      double last = 0;
-      for(auto it = search.begin(); it != search.end(); ++it)
+    // Blocks of samples: the queries only read the tree (built above), and
+    // each writes its own sample's slots.
+    const std::size_t block = 256;
+    internal::concurrent_for<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
+      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
       {
-        last = CGAL::to_double(it->second);
-        if(it->first == i || j == m_k)
-          continue;
-        if(j == 1)
-          m_nearest_distance[i] = std::sqrt(last);
-        m_neighbors[i * m_k + j++] = it->first;
+        Neighbor_search search(*m_point_tree, m_points[i], static_cast<unsigned int>(m_k), 0, true, distance);
+        // The result is sorted by distance; put i itself first even among
+        // duplicates so that neighbors(i)[0] == i always.
+        m_neighbors[i * m_k] = i;
+        std::size_t j = 1;
+        double last = 0;
+        for(auto it = search.begin(); it != search.end(); ++it)
+        {
+          last = CGAL::to_double(it->second);
+          if(it->first == i || j == m_k)
+            continue;
+          if(j == 1)
+            m_nearest_distance[i] = std::sqrt(last);
+          m_neighbors[i * m_k + j++] = it->first;
+        }
+        m_kth_distance[i] = std::sqrt(last);
       }
-      m_kth_distance[i] = std::sqrt(last);
-    }
+    });
     m_timings.neighbors = internal::seconds_since(start);
   }
 
@@ -573,51 +588,57 @@ private:
     residual.assign(n, 0);
     m_centres.resize(n);
     m_normals.resize(n);
-    m_trimmed_neighbourhoods = 0;
-    std::vector<std::pair<double, std::size_t>> offsets(m_k);
-    std::vector<char> keep(m_k);
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const Point_3& x = m_points[i];
-      gather_offsets(i, d);
-      Plane_fit fit = fit_plane(d.data(), m_k, all);
-      const double tau = (std::max)(0.3 * m_kth_distance[i], noise_gap);
-      // Where all k samples are within 0.05 tau (RMS) of one plane, a split
-      // could move the plane by about that much only: not worth a test.
-      if(k0 < m_k && fit.residual > 0.05 * tau)
+    std::vector<char> trimmed(n, 0);
+    // Blocks of samples, each with its own scratch and its samples' slots.
+    const std::size_t block = 256;
+    internal::concurrent_for<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
+      std::vector<Eigen::Vector3d> d(m_k);
+      std::vector<std::pair<double, std::size_t>> offsets(m_k);
+      std::vector<char> keep(m_k);
+      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
       {
-        const Plane_fit first = fit_plane(d.data(), k0, all);
-        for(std::size_t j = 0; j < m_k; ++j)
-          offsets[j] = {(d[j] - first.mean).dot(first.normal), j};
-        std::sort(offsets.begin(), offsets.end());
-        // The group of consecutive offsets, without a gap > tau, that holds j = 0.
-        std::size_t self = 0;
-        while(offsets[self].second != 0)
-          ++self;
-        std::size_t begin = self, end = self + 1;
-        while(begin > 0 && offsets[begin].first - offsets[begin - 1].first <= tau)
-          --begin;
-        while(end < m_k && offsets[end].first - offsets[end - 1].first <= tau)
-          ++end;
-        if(end - begin < m_k && end - begin >= k0 / 2 && m_k - (end - begin) >= 3)
+        const Point_3& x = m_points[i];
+        gather_offsets(i, d);
+        Plane_fit fit = fit_plane(d.data(), m_k, all);
+        const double tau = (std::max)(0.3 * m_kth_distance[i], noise_gap);
+        // Where all k samples are within 0.05 tau (RMS) of one plane, a split
+        // could move the plane by about that much only: not worth a test.
+        if(k0 < m_k && fit.residual > 0.05 * tau)
         {
-          std::fill(keep.begin(), keep.end(), 0);
-          for(std::size_t a = begin; a < end; ++a)
-            keep[offsets[a].second] = 1;
-          const Plane_fit own = fit_plane(d.data(), m_k, [&keep](std::size_t j) { return keep[j] != 0; });
-          const Plane_fit other = fit_plane(d.data(), m_k, [&keep](std::size_t j) { return keep[j] == 0; });
-          // A second sheet is parallel; a group split off across a crease is not.
-          if(std::abs(own.normal.dot(other.normal)) >= 0.8)
+          const Plane_fit first = fit_plane(d.data(), k0, all);
+          for(std::size_t j = 0; j < m_k; ++j)
+            offsets[j] = {(d[j] - first.mean).dot(first.normal), j};
+          std::sort(offsets.begin(), offsets.end());
+          // The group of consecutive offsets, without a gap > tau, that holds j = 0.
+          std::size_t self = 0;
+          while(offsets[self].second != 0)
+            ++self;
+          std::size_t begin = self, end = self + 1;
+          while(begin > 0 && offsets[begin].first - offsets[begin - 1].first <= tau)
+            --begin;
+          while(end < m_k && offsets[end].first - offsets[end - 1].first <= tau)
+            ++end;
+          if(end - begin < m_k && end - begin >= k0 / 2 && m_k - (end - begin) >= 3)
           {
-            ++m_trimmed_neighbourhoods;
-            fit = own;
+            std::fill(keep.begin(), keep.end(), 0);
+            for(std::size_t a = begin; a < end; ++a)
+              keep[offsets[a].second] = 1;
+            const Plane_fit own = fit_plane(d.data(), m_k, [&keep](std::size_t j) { return keep[j] != 0; });
+            const Plane_fit other = fit_plane(d.data(), m_k, [&keep](std::size_t j) { return keep[j] == 0; });
+            // A second sheet is parallel; a group split off across a crease is not.
+            if(std::abs(own.normal.dot(other.normal)) >= 0.8)
+            {
+              trimmed[i] = 1;
+              fit = own;
+            }
           }
         }
+        m_centres[i] = x + Vector_3(fit.mean.x(), fit.mean.y(), fit.mean.z());
+        m_normals[i] = Vector_3(fit.normal.x(), fit.normal.y(), fit.normal.z());
+        residual[i] = fit.residual;
       }
-      m_centres[i] = x + Vector_3(fit.mean.x(), fit.mean.y(), fit.mean.z());
-      m_normals[i] = Vector_3(fit.normal.x(), fit.normal.y(), fit.normal.z());
-      residual[i] = fit.residual;
-    }
+    });
+    m_trimmed_neighbourhoods = std::size_t(std::count(trimmed.begin(), trimmed.end(), 1));
     // rho: see the class comment.  median(d_k) ~ sqrt(k / (pi lambda)) for a
     // sample of density lambda, so this is 1.5 sqrt(15 / (pi lambda)) for any k.
     m_rho = m_estimated_rho = 1.5 * std::sqrt(15.0 / double(m_k)) * median(m_kth_distance);
@@ -942,7 +963,7 @@ private:
     const auto start = std::chrono::steady_clock::now();
     m_centre_map = Index_point_map(m_centres.data());
     m_centre_tree = std::make_unique<Tree>(boost::counting_iterator<std::size_t>(0),
-                                           boost::counting_iterator<std::size_t>(m_centres.size()), Splitter(),
+                                           boost::counting_iterator<std::size_t>(m_centres.size()), Splitter(leaf_size),
                                            Search_traits(m_centre_map));
     m_centre_tree->build();
     m_timings.neighbors += internal::seconds_since(start);

@@ -122,9 +122,12 @@ Regular_lattice_3 contouring_lattice(const ContouringField_3& field,
  * rule for every output), then receive the points and outward-oriented
  * triangles (f < 0 is inside).
  *
- * \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`; the
- *         traversal is sequential today whatever the tag (it is there so that
- *         every algorithm of the package has the same signature).
+ * \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`: with
+ *         the latter the field is evaluated on TBB's threads (so `field` must
+ *         be safe to call concurrently, as `Tangent_plane_signed_distance_3`
+ *         is), at the lattice points the traversal from the samples' cubes
+ *         reads, one breadth-first level at a time; the traversal itself, and
+ *         so the output, are the sequential ones bit for bit.
  *
  * \param lattice the domain: lattice point (i, j, k) is `lattice.coordinate()`s;
  *   `contouring_lattice(field, np)` is the default one (the named parameters
@@ -212,7 +215,8 @@ Contouring_statistics contour_signed_distance(const Regular_lattice_3& lattice, 
   internal::check_concurrency_tag<ConcurrencyTag>();
   out_points.clear();
   out_triangles.clear();
-  return internal::contour_on_lattice(internal::to_contouring_lattice(lattice), field, out_points, out_triangles, np);
+  return internal::contour_on_lattice<ConcurrencyTag>(internal::to_contouring_lattice(lattice), field, out_points,
+                                                      out_triangles, np);
 }
 
 /*!
@@ -220,7 +224,9 @@ Contouring_statistics contour_signed_distance(const Regular_lattice_3& lattice, 
  * Points (+ optional normals) to an outward-oriented triangle soup:
  * `Tangent_plane_signed_distance_3` then `contour_signed_distance()`.
  *
- * \tparam ConcurrencyTag as for `contour_signed_distance()`
+ * \tparam ConcurrencyTag as for `contour_signed_distance()`; it also runs the
+ *         k-NN queries and plane fits of the field on TBB's threads
+ *         (`Tangent_plane_signed_distance_3<Geom_traits, ConcurrencyTag>`)
  * \param lattice the domain (e.g. `contouring_lattice()` of the samples' field)
  * \param points the samples
  * \param out_points, out_triangles the output soup, cleared first
@@ -292,7 +298,7 @@ Contouring_statistics contour_point_set(const Regular_lattice_3& lattice, const 
                                         const NamedParameters& np = parameters::default_values())
 {
   typedef typename CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
-  const Tangent_plane_signed_distance_3<Geom_traits> field(points, np);
+  const Tangent_plane_signed_distance_3<Geom_traits, ConcurrencyTag> field(points, np);
   const Contouring_statistics report =
       contour_signed_distance<ConcurrencyTag>(lattice, field, out_points, out_triangles, np);
   if(report.empty_output)
