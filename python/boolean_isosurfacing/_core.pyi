@@ -54,6 +54,7 @@ def contour(
     max_jump: Optional[float] = None,
     min_component_size: Optional[float] = None,
     margin: Optional[float] = None,
+    threads: int = 0,
 ) -> Tuple[FloatArray, IndexArray, Dict[str, Any]]:
     """Contours point samples (Hoppe et al. 1992): returns (V, F, info)."""
 

@@ -265,9 +265,9 @@ py::tuple csg_py(const py::sequence& meshes_in, const std::string& expr, std::op
 py::tuple contour_py(const py::handle& points_object, const py::handle& normals_object, std::optional<double> cell_size,
                      std::optional<double> cells, std::size_t k, std::optional<double> rho,
                      std::optional<double> delta, std::optional<double> max_jump,
-                     std::optional<double> min_component_size, std::optional<double> margin)
+                     std::optional<double> min_component_size, std::optional<double> margin, int threads)
 {
-  typedef BI::Tangent_plane_signed_distance_3<K> Field;
+  typedef BI::Tangent_plane_signed_distance_3<K, CGAL::Parallel_if_available_tag> Field;
   if(cell_size && cells)
     throw BI::Invalid_input_error("give at most one of cell_size and cells");
   const Double_array P = as_double_rows(points_object, 3, "points", false);
@@ -312,10 +312,12 @@ py::tuple contour_py(const py::handle& points_object, const py::handle& normals_
       else
         field.emplace(indices, np);
     };
-    if(N)
-      build(base.normal_map(normal_map));
-    else
-      build(base);
+    with_threads(threads, [&] {
+      if(N)
+        build(base.normal_map(normal_map));
+      else
+        build(base);
+    });
 
     // The library's documented defaults, computed here so that one
     // instantiation of contour_signed_distance serves every call.
@@ -347,10 +349,12 @@ py::tuple contour_py(const py::handle& points_object, const py::handle& normals_
       throw BI::Invalid_input_error("margin must be >= 0 and finite");
     const BI::Regular_lattice_3 lattice =
         BI::contouring_lattice(*field, BI::parameters::cell_size(r, BI::parameters::lattice_margin(lattice_margin)));
-    report = BI::contour_signed_distance(
-        lattice, *field, out_points, triangles,
-        BI::parameters::maximum_jump(jump, BI::parameters::minimum_closed_component_size(bubble))
-            .callback(python_signals_callback()));
+    report = with_threads(threads, [&] {
+      return BI::contour_signed_distance<CGAL::Parallel_if_available_tag>(
+          lattice, *field, out_points, triangles,
+          BI::parameters::maximum_jump(jump, BI::parameters::minimum_closed_component_size(bubble))
+              .callback(python_signals_callback()));
+    });
   }
   py::dict info;
   const auto& t = field->timings();
@@ -720,7 +724,7 @@ time of each stage.  The GIL is released while it runs.)doc");
 
   m.def("contour", &contour_py, "points"_a, "normals"_a = py::none(), "cell_size"_a = py::none(),
         "cells"_a = py::none(), "k"_a = 15, "rho"_a = py::none(), "delta"_a = py::none(), "max_jump"_a = py::none(),
-        "min_component_size"_a = py::none(), "margin"_a = py::none(),
+        "min_component_size"_a = py::none(), "margin"_a = py::none(), "threads"_a = 0,
         R"doc(Contours oriented (or unoriented) point samples into a triangle mesh (Hoppe et al. 1992).
 
 points: (n, 3) float64 samples; normals: optional (n, 3) roughly outward
@@ -732,7 +736,9 @@ spacing, default a third of the estimated rho; max_jump: a length, the
 largest change of f along a sign-changing edge (default 3 cell_size +
 2 delta; inf gives Hoppe's plain rule); min_component_size: closed pieces
 with a smaller bounding-box diagonal are removed (default rho);
-margin: lattice cells around the samples' box.
+margin: lattice cells around the samples' box.  threads: TBB worker
+threads for the k-NN queries, the plane fits and the field at the lattice
+points (0: all cores); the output does not depend on it.
 
 Returns (V, F, info): outward-oriented triangles (f < 0 inside); info holds
 rho, delta, the lattice and the counts and times of each stage.)doc");

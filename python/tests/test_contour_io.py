@@ -40,6 +40,15 @@ def test_contour_inward_normals_are_rejected_and_the_result_is_outward():
     assert bi.surveyor_volume(V, F) > 0
 
 
+@pytest.mark.parametrize("with_normals", [False, True])
+def test_contour_output_does_not_depend_on_the_number_of_threads(with_normals):
+    P, N = fibonacci_sphere(4000)
+    V1, F1, i1 = bi.contour(P, N if with_normals else None, threads=1)
+    V2, F2, i2 = bi.contour(P, N if with_normals else None, threads=0)
+    assert np.array_equal(V1, V2) and np.array_equal(F1, F2)
+    assert len(F1) > 1000
+
+
 def test_contour_finer_cells_give_more_triangles():
     P, N = fibonacci_sphere(2000)
     _, F1, i1 = bi.contour(P, cells=20)
