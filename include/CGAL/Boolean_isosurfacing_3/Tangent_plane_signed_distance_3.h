@@ -467,9 +467,8 @@ private:
     const Distance distance(m_point_map);
     // Blocks of samples: the queries only read the tree (built above), and
     // each writes its own sample's slots.
-    const std::size_t block = 256;
-    internal::concurrent_for<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
-      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
+    internal::concurrent_for_blocks<ConcurrencyTag>(n, 256, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i)
       {
         Neighbor_search search(*m_point_tree, m_points[i], static_cast<unsigned int>(m_k), 0, true, distance);
         // The result is sorted by distance; put i itself first even among
@@ -590,12 +589,11 @@ private:
     m_normals.resize(n);
     std::vector<char> trimmed(n, 0);
     // Blocks of samples, each with its own scratch and its samples' slots.
-    const std::size_t block = 256;
-    internal::concurrent_for<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
+    internal::concurrent_for_blocks<ConcurrencyTag>(n, 256, [&](std::size_t first, std::size_t last) {
       std::vector<Eigen::Vector3d> d(m_k);
       std::vector<std::pair<double, std::size_t>> offsets(m_k);
       std::vector<char> keep(m_k);
-      for(std::size_t i = b * block; i < (std::min)(n, (b + 1) * block); ++i)
+      for(std::size_t i = first; i < last; ++i)
       {
         const Point_3& x = m_points[i];
         gather_offsets(i, d);

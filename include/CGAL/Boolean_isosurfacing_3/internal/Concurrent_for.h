@@ -108,6 +108,18 @@ void concurrent_for(std::size_t n, const Body& body, const Progress& progress = 
   }
 }
 
+/// Calls `body(first, last)` for consecutive blocks [first, last) of
+/// [0, n), `block` indices each (the last one shorter): `concurrent_for()`
+/// over blocks, for loops whose iterations are too small to schedule one by
+/// one or that keep scratch buffers per block.
+template <typename ConcurrencyTag, typename Body>
+void concurrent_for_blocks(std::size_t n, std::size_t block, const Body& body)
+{
+  concurrent_for<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
+    body(b * block, (std::min)(n, (b + 1) * block));
+  });
+}
+
 } // namespace internal
 } // namespace Boolean_isosurfacing
 } // namespace CGAL

@@ -11,7 +11,8 @@
 // `std::unordered_map` each lookup follows a bucket pointer to a node
 // allocated on its own, here it reads one slot (usually one cache line).
 // No erase, no iteration: the callers only insert and find, so the order in
-// which keys were hashed can never reach an output.
+// which keys were hashed can never reach an output.  (Boost's
+// unordered_flat_map would do; it needs Boost 1.81, Debian 12 has 1.74.)
 
 #include <CGAL/assertions.h>
 

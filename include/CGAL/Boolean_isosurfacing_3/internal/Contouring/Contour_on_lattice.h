@@ -232,9 +232,8 @@ public:
         keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
         key_values.resize(keys.size());
         const auto start = std::chrono::steady_clock::now();
-        const std::size_t block = 64;
-        concurrent_for<ConcurrencyTag>((keys.size() + block - 1) / block, [&](std::size_t b) {
-          for(std::size_t e = b * block; e < (std::min)(keys.size(), (b + 1) * block); ++e)
+        concurrent_for_blocks<ConcurrencyTag>(keys.size(), 64, [&](std::size_t first, std::size_t last) {
+          for(std::size_t e = first; e < last; ++e)
           {
             const std::array<std::int64_t, 3> p = internal::lattice_index(keys[e]);
             key_values[e] = evaluate(p[0], p[1], p[2]);
