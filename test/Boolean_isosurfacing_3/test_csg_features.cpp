@@ -16,6 +16,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Marching_cubes_csg/Feature_triangulation.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Triangle_pair_intersection.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Embedded_vertex_stars.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/does_triangle_soup_self_intersect.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
@@ -2051,6 +2052,107 @@ TEST(SoupSelfIntersection, SoupAnswersAreThoseOfPMPOnTheMesh)
   EXPECT_GT(answers[1], 50u);
   EXPECT_GT(degenerate, 10u);
   EXPECT_GT(compared_pairs, 200u);
+}
+
+// A vertex whose star is certified embedded (Embedded_vertex_stars.h) has
+// no intersecting pair of triangles around it: random fans about a vertex,
+// closed and open, flat and folded, winding once and twice, with a
+// triangle too many, turned off the axes; every certified one is checked pair by pair with
+// triangles_intersect().  The certificate must also certify most flat
+// fans and the stars of the test meshes, or it saves nothing.
+TEST(SoupSelfIntersection, EmbeddedStarsHaveNoIntersectingPairs)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::normal_distribution<double> normal(0, 1);
+  std::size_t certified_by_kind[6] = {0, 0, 0, 0, 0, 0}, intersecting = 0, cases = 0;
+  for(int round = 0; round < 4800; ++round)
+  {
+    // 0: closed flat fan with small bumps; 1: closed fan with large bumps
+    // (folds); 2: closed fan winding twice; 3: open flat fan turning more
+    // than once; 4: closed fan with two sectors swapped; 5: closed flat fan
+    // and one more triangle through its first one (a non-manifold vertex).
+    const int kind = round % 6;
+    const int n = 3 + int(unit(random) * 10) + (kind == 2 || kind == 3 ? 4 : 0);
+    const double turns = kind == 2 ? 2 : (kind == 3 ? 1.1 + 0.5 * unit(random) : 1);
+    std::vector<double> steps(static_cast<std::size_t>(n));
+    double total = 0;
+    for(double& a : steps)
+      total += (a = 0.5 + unit(random));
+    const double bump = kind == 1 ? 1.5 : (kind == 3 ? 0 : 0.05);
+    Soup_points points{{{0, 0, 0}}};
+    double angle = 2 * CGAL_PI * unit(random);
+    for(int i = 0; i < n; ++i)
+    {
+      const double radius = 0.5 + unit(random);
+      points.push_back({{radius * std::cos(angle), radius * std::sin(angle), bump * normal(random)}});
+      angle += 2 * CGAL_PI * turns * steps[std::size_t(i)] / total;
+    }
+    if(kind == 4)
+      std::swap(points[1], points[2]);
+    if(kind == 5)
+      for(const double a : {0.35, 0.3})
+      {
+        const auto &p = points[1], &q = points[2];
+        const double z = a == 0.3 ? 0.1 : -0.1;
+        points.push_back({{a * p[0] + (0.6 - a) * q[0], a * p[1] + (0.6 - a) * q[1], z}});
+      }
+    // A random rotation, rounded to doubles: the fan leaves the axes.
+    const Epick::Vector_3 axis(normal(random), normal(random), normal(random));
+    const Epick::Aff_transformation_3 turn = [&] {
+      const double a = 2 * CGAL_PI * unit(random), c = std::cos(a), s = std::sin(a);
+      const Epick::Vector_3 u = axis / std::sqrt(axis.squared_length());
+      return Epick::Aff_transformation_3(c + u.x() * u.x() * (1 - c), u.x() * u.y() * (1 - c) - u.z() * s,
+                                         u.x() * u.z() * (1 - c) + u.y() * s, u.y() * u.x() * (1 - c) + u.z() * s,
+                                         c + u.y() * u.y() * (1 - c), u.y() * u.z() * (1 - c) - u.x() * s,
+                                         u.z() * u.x() * (1 - c) - u.y() * s, u.z() * u.y() * (1 - c) + u.x() * s,
+                                         c + u.z() * u.z() * (1 - c));
+    }();
+    for(auto& p : points)
+    {
+      const Point q = turn(Point(p[0], p[1], p[2]));
+      p = {{q.x(), q.y(), q.z()}};
+    }
+    Soup_triangles triangles;
+    for(int i = 0; i < (kind == 3 ? n - 1 : n); ++i)
+      triangles.push_back({{0, std::uint32_t(1 + i), std::uint32_t(1 + (i + 1) % n)}});
+    if(kind == 5)
+      triangles.push_back({{0, std::uint32_t(n + 1), std::uint32_t(n + 2)}});
+    const BI::internal::Vertex_triangle_incidences stars(points.size(), triangles);
+    const bool certified =
+        BI::internal::vertices_with_embedded_stars<CGAL::Sequential_tag>(points, triangles, stars)[0] != 0;
+    bool any = false;
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      for(std::size_t u = t + 1; u < triangles.size(); ++u)
+        any = any || BI::internal::triangles_intersect(points, triangles[t], triangles[u]);
+    EXPECT_FALSE(certified && any) << "kind " << kind << " round " << round;
+    certified_by_kind[kind] += certified ? 1 : 0;
+    intersecting += any ? 1 : 0;
+    ++cases;
+  }
+  // Flat fans are certified; a fan winding twice, an open one turning more
+  // than once or one with a triangle too many never is (each has
+  // intersecting pairs).
+  EXPECT_GT(certified_by_kind[0], cases / 6 * 9 / 10);
+  EXPECT_EQ(certified_by_kind[2], 0u);
+  EXPECT_EQ(certified_by_kind[3], 0u);
+  EXPECT_EQ(certified_by_kind[5], 0u);
+  EXPECT_GT(intersecting, cases / 3);
+
+  // Nearly every star of a closed mesh.
+  Mesh sphere, fandisk;
+  BI::make_icosphere(sphere, Point(0, 0, 0), 1, 3);
+  BI::IO::read_closed_triangle_mesh(std::string(BISO_SHARED_DATA_DIR) + "/meshes/fandisk.off", fandisk);
+  for(const Mesh* mesh : {&sphere, &fandisk})
+  {
+    Soup_points points;
+    Soup_triangles triangles;
+    soup_of(*mesh, points, triangles);
+    const BI::internal::Vertex_triangle_incidences stars(points.size(), triangles);
+    const std::vector<char> embedded =
+        BI::internal::vertices_with_embedded_stars<CGAL::Parallel_if_available_tag>(points, triangles, stars);
+    EXPECT_GT(std::count(embedded.begin(), embedded.end(), 1), std::ptrdiff_t(points.size() * 95 / 100));
+  }
 }
 
 // A degenerate triangle intersects itself, as PMP reports it.  (In a
