@@ -1932,6 +1932,50 @@ TEST(SoupSelfIntersection, TheGridVisitsEachPairOfOverlappingBoxesOnce)
       }
       EXPECT_GT(expected.size(), all ? 150u : 50u);
     }
+
+  // With a selection, a grid of more cells than a dense grid allows (only
+  // the selected triangles' cells are stored): small triangles in 2.4 10^8
+  // cells.
+  Soup_points small_points;
+  Soup_triangles small;
+  for(std::uint32_t t = 0; t < 3000; ++t)
+  {
+    const std::array<double, 3> c{{0.4 * unit(random), 0.4 * unit(random), 0.4 * unit(random)}};
+    for(int v = 0; v < 3; ++v)
+      small_points.push_back({{c[0] + 0.03 * unit(random), c[1] + 0.03 * unit(random), c[2] + 0.03 * unit(random)}});
+    small.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
+  }
+  const auto small_box = [&](std::size_t t) {
+    CGAL::Bbox_3 b;
+    for(int v = 0; v < 3; ++v)
+    {
+      const std::array<double, 3>& p = small_points[small[t][v]];
+      b += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
+    }
+    return b;
+  };
+  std::set<std::pair<std::size_t, std::size_t>> expected;
+  for(std::size_t t = 0; t < small.size(); ++t)
+    for(std::size_t u = t + 1; u < small.size(); ++u)
+      if((selected(t) || selected(u)) && CGAL::do_overlap(small_box(t), small_box(u)))
+        expected.insert({t, u});
+  BI::internal::Triangle_grid_3 grid;
+  grid.inverse_cell_size = 1 / 0.0017;
+  for(int a = 0; a < 3; ++a)
+    grid.cells[a] = 620;
+  ASSERT_GT(grid.number_of_cells(), BI::internal::Triangle_grid_3::max_cells);
+  std::set<std::pair<std::size_t, std::size_t>> visited;
+  std::size_t visits = 0;
+  EXPECT_TRUE(BI::internal::for_each_overlapping_triangle_pair<CGAL::Sequential_tag>(
+      small_points, small, grid, false, selected, std::size_t(-1), std::size_t(-1),
+      [&](std::size_t, std::size_t t, std::size_t u) {
+        visited.insert({t, u});
+        ++visits;
+        return false;
+      }));
+  EXPECT_EQ(visits, visited.size());
+  EXPECT_TRUE(visited == expected) << visited.size() << " pairs visited, " << expected.size() << " overlap";
+  EXPECT_GT(expected.size(), 100u);
 }
 
 // does_triangle_soup_self_intersect() answers as PMP::does_self_intersect()

@@ -18,6 +18,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Default_init_allocator.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Flat_uint64_map.h>
 
 #include <CGAL/Bbox_3.h>
 
@@ -39,9 +40,12 @@ namespace internal {
 /// each pair once).
 struct Triangle_grid_3
 {
-  /// At most this many cells: a cell id and a triangle index share one
-  /// 64-bit sort key, and the weak-fan check's bitmap of cells stays 8 MB.
+  /// At most this many cells when every triangle is listed: a cell id and
+  /// a triangle index share one 64-bit sort key.
   static constexpr std::size_t max_cells = std::size_t(1) << 26;
+  /// At most this many when only the cells of selected triangles are
+  /// (they are numbered apart: the grid is sparse).
+  static constexpr std::size_t max_sparse_cells = std::size_t(1) << 62;
 
   std::array<double, 3> origin{{0, 0, 0}};
   double inverse_cell_size = 1;
@@ -129,24 +133,37 @@ constexpr std::size_t overlapping_pair_parts = 64;
 /// (cell, triangle) entries or compare more than `max_box_pairs` pairs of
 /// boxes: the triangles are not about a cell (a few long ones across many
 /// cells, or many small ones in a few cells), and the caller takes another
-/// way.  Under `Parallel_tag` the parts run concurrently.
+/// way.  Under `Parallel_tag` the parts run concurrently.  Without
+/// `all_selected` the grid may have up to `max_sparse_cells` cells: only
+/// those a selected triangle meets are stored (a weak-fan check on a thin
+/// shell at 65536 cells: 2 10^13 lattice cubes, a few million marked).
 template <typename ConcurrencyTag, typename Triangle, typename Selected, typename Visit>
 bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>& points,
                                         const std::vector<Triangle>& triangles, const Triangle_grid_3& grid,
                                         bool all_selected, const Selected& selected, std::size_t max_listed,
                                         std::size_t max_box_pairs, const Visit& visit)
 {
-  CGAL_precondition(grid.number_of_cells() <= Triangle_grid_3::max_cells);
+  CGAL_precondition(grid.number_of_cells() <=
+                    (all_selected ? Triangle_grid_3::max_cells : Triangle_grid_3::max_sparse_cells));
   CGAL_precondition(triangles.size() <= (std::size_t(1) << 32));
-  // Without all_selected, only the cells a selected triangle meets matter.
-  std::vector<bool> marked;
+  // Without all_selected, only the cells a selected triangle meets matter:
+  // `marked_cells` lists them in increasing order, and the sort keys carry
+  // their rank there (`rank_of_marked`) instead of the cell id.
+  std::vector<std::uint64_t> marked_cells;
+  Flat_uint64_map<std::uint32_t> rank_of_marked;
   if(!all_selected)
   {
-    marked.assign(grid.number_of_cells(), false);
     for(std::size_t t = 0; t < triangles.size(); ++t)
       if(selected(t))
         for_each_cell(triangle_cell_box(points, triangles[t], grid), grid,
-                      [&](std::size_t cell) { marked[cell] = true; });
+                      [&](std::size_t cell) { marked_cells.push_back(cell); });
+    std::sort(marked_cells.begin(), marked_cells.end());
+    marked_cells.erase(std::unique(marked_cells.begin(), marked_cells.end()), marked_cells.end());
+    if(marked_cells.size() >= (std::size_t(1) << 32))
+      return false;
+    rank_of_marked.reserve(marked_cells.size());
+    for(std::size_t r = 0; r < marked_cells.size(); ++r)
+      rank_of_marked.insert(marked_cells[r], std::uint32_t(r));
   }
 
   // The keys (cell << 32 | triangle), by ranges of triangles: one vector a
@@ -179,8 +196,10 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
         return;
       }
       for_each_cell(c, grid, [&](std::size_t cell) {
-        if(all_selected || marked[cell])
+        if(all_selected)
           out.push_back((std::uint64_t(cell) << 32) | t);
+        else if(const std::uint32_t* rank = rank_of_marked.find(cell))
+          out.push_back((std::uint64_t(*rank) << 32) | t);
       });
       if(out.size() - reported >= 4096 || t + 1 == r[1])
       {
@@ -201,7 +220,7 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
   Keys keys(total_listed), sorted(total_listed);
   {
     int cell_bits = 0;
-    while((std::size_t(1) << cell_bits) < grid.number_of_cells())
+    while((std::size_t(1) << cell_bits) < (all_selected ? grid.number_of_cells() : marked_cells.size()))
       ++cell_bits;
     const int digit_bits = 13;
     const std::uint64_t mask = (std::uint64_t(1) << digit_bits) - 1;
@@ -264,7 +283,8 @@ bool for_each_overlapping_triangle_pair(const std::vector<std::array<double, 3>>
       const std::size_t begin = run_begin[run], end = run_begin[run + 1];
       if(end - begin < 2)
         continue;
-      const std::size_t cell = std::size_t(keys[begin] >> 32);
+      const std::size_t cell =
+          all_selected ? std::size_t(keys[begin] >> 32) : std::size_t(marked_cells[std::size_t(keys[begin] >> 32)]);
       const std::array<std::uint32_t, 3> ijk{{std::uint32_t(cell % grid.cells[0]),
                                              std::uint32_t(cell / grid.cells[0] % grid.cells[1]),
                                              std::uint32_t(cell / grid.cells[0] / grid.cells[1])}};
