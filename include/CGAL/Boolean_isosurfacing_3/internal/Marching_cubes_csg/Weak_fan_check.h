@@ -87,7 +87,7 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
   // The found cubes do not depend on the concurrency (sorted at the end).
   std::vector<std::vector<std::uint64_t>> found(overlapping_pair_parts);
   const std::size_t unlimited = std::size_t(-1);
-  for_each_overlapping_triangle_pair<ConcurrencyTag>(
+  const bool decided = for_each_overlapping_triangle_pair<ConcurrencyTag>(
       points, triangles, grid, false, [&](std::size_t t) { return is_weak(triangles[t]); }, unlimited, unlimited,
       [&](std::size_t part, std::size_t t, std::size_t u) {
         if(triangles_intersect(points, triangles[t], triangles[u]))
@@ -97,6 +97,9 @@ std::vector<std::uint64_t> cubes_of_intersecting_weak_fans(const std::vector<std
                 found[part].push_back(cube - 1);
         return false;
       });
+  if(!decided) // 2^32 marked cells or more: unchecked, so none of the weak fans is kept
+    for(const std::array<std::uint64_t, 2>& w : weak_fans)
+      cubes.push_back(w[1]);
   for(const std::vector<std::uint64_t>& f : found)
     cubes.insert(cubes.end(), f.begin(), f.end());
   std::sort(cubes.begin(), cubes.end());
