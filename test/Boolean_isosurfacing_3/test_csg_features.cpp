@@ -1886,15 +1886,16 @@ TEST(SoupSelfIntersection, TheGridVisitsEachPairOfOverlappingBoxesOnce)
     }
     triangles.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
   }
-  const auto box = [&](std::size_t t) {
+  const auto box_in = [](const Soup_points& in, const Soup_triangles& of, std::size_t t) {
     CGAL::Bbox_3 b;
     for(int v = 0; v < 3; ++v)
     {
-      const std::array<double, 3>& p = points[triangles[t][v]];
+      const std::array<double, 3>& p = in[of[t][v]];
       b += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
     }
     return b;
   };
+  const auto box = [&](std::size_t t) { return box_in(points, triangles, t); };
   const auto selected = [](std::size_t t) { return t % 5 == 0; };
   for(const bool all : {true, false})
     for(const double cell : {0.013, 0.05, 0.3, 2.0})
@@ -1945,15 +1946,7 @@ TEST(SoupSelfIntersection, TheGridVisitsEachPairOfOverlappingBoxesOnce)
       small_points.push_back({{c[0] + 0.03 * unit(random), c[1] + 0.03 * unit(random), c[2] + 0.03 * unit(random)}});
     small.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
   }
-  const auto small_box = [&](std::size_t t) {
-    CGAL::Bbox_3 b;
-    for(int v = 0; v < 3; ++v)
-    {
-      const std::array<double, 3>& p = small_points[small[t][v]];
-      b += CGAL::Bbox_3(p[0], p[1], p[2], p[0], p[1], p[2]);
-    }
-    return b;
-  };
+  const auto small_box = [&](std::size_t t) { return box_in(small_points, small, t); };
   std::set<std::pair<std::size_t, std::size_t>> expected;
   for(std::size_t t = 0; t < small.size(); ++t)
     for(std::size_t u = t + 1; u < small.size(); ++u)
