@@ -94,15 +94,15 @@ bool star_projects_one_to_one(const std::vector<std::array<double, 3>>& points,
   const auto upper = [&](const Point_2& p) {
     return p.y() > centre.y() || (p.y() == centre.y() && p.x() > centre.x());
   };
-  std::array<std::uint32_t, max_star> from, to;
+  std::array<std::size_t, max_star> from, to;
   CGAL::Orientation turn = CGAL::COLLINEAR;
   int crossings = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
     const Triangle& t = triangles[star_begin[i]];
     const int c = std::size_t(t[0]) == v ? 0 : (std::size_t(t[1]) == v ? 1 : 2);
-    from[i] = std::uint32_t(t[(c + 1) % 3]);
-    to[i] = std::uint32_t(t[(c + 2) % 3]);
+    from[i] = std::size_t(t[(c + 1) % 3]);
+    to[i] = std::size_t(t[(c + 2) % 3]);
     const std::array<double, 3>&a = points[from[i]], &b = points[to[i]];
     const Point_2 pa(a[x], a[y]), pb(b[x], b[y]);
     const CGAL::Orientation o = CGAL::orientation(centre, pa, pb);
@@ -120,7 +120,7 @@ bool star_projects_one_to_one(const std::vector<std::array<double, 3>>& points,
   // One cycle through all the sectors, each starting where the last ended
   // (else, not certified: a fan whose sides do not pair up is no star).
   std::size_t length = 1;
-  for(std::uint32_t end = to[0]; end != from[0]; ++length)
+  for(std::size_t end = to[0]; end != from[0]; ++length)
   {
     std::size_t next = 1;
     while(next < n && from[next] != end)
