@@ -354,6 +354,22 @@ TEST(SurveyorVolume, WorksOnPolyhedron3AndWithAVertexPointMap)
               27.0 / 6.0, 1e-14);
 }
 
+// The mesh overload reads the points in place when its map returns
+// references, and copies them when it returns values (temporaries that the
+// sum must not keep pointers to): both give the same bits.  A map that
+// returns values is also what the sanitizer build checks for dangling reads.
+TEST(SurveyorVolume, PointsReadInPlaceOrCopiedGiveTheSameBits)
+{
+  Mesh torus = make_torus(Point(0, 0, 0), 1.0, 0.4, 97, 61); // 11834 triangles: not a multiple of the batch
+  CGAL::Polygon_mesh_processing::transform(
+      CGAL::Aff_transformation_3<Epick>(CGAL::TRANSLATION, Epick::Vector_3(1e3, -2e2, 0.5)), torus);
+  const auto by_value = boost::make_function_property_map<Mesh::Vertex_index, Point>(
+      [&torus](Mesh::Vertex_index v) { return torus.point(v); });
+  const double in_place = BI::surveyor_volume(torus);
+  EXPECT_EQ(in_place, BI::surveyor_volume(torus, CGAL::parameters::vertex_point_map(by_value)));
+  EXPECT_LT(relative_error(in_place, exact_volume(torus)), 4e-15);
+}
+
 // An archetype of SurveyorVolumeTraits_3: exactly the documented members, so
 // the function may not use anything else from the kernel.
 struct Surveyor_volume_traits_archetype
@@ -439,6 +455,29 @@ TEST(SurveyorVolumeErrors, OpenMesh)
   expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(points, open); }, "not closed");
   std::vector<Triangle> flipped = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 3, 2}};
   expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(points, flipped); }, "inconsistently oriented");
+}
+
+// Closedness on a Surface_mesh is settled by the counts (three halfedges a
+// face) when they allow it, else edge by edge: both ways must agree, with
+// removed elements (garbage) or without.
+TEST(SurveyorVolumeErrors, ClosednessByCountsHoldsWithAndWithoutGarbage)
+{
+  Mesh sphere = make_sphere(Point(0, 0, 0), 1.0, 2);
+  // Collapsing an edge keeps the mesh closed and leaves removed elements.
+  CGAL::Euler::collapse_edge(edge(halfedge(*faces(sphere).begin(), sphere), sphere), sphere);
+  ASSERT_TRUE(sphere.has_garbage());
+  const double with_garbage = BI::surveyor_volume(sphere);
+  EXPECT_LT(relative_error(with_garbage, exact_volume(sphere)), 4e-15);
+  Mesh collected = sphere;
+  collected.collect_garbage();
+  EXPECT_EQ(with_garbage, BI::surveyor_volume(collected));
+
+  // Open, with and without garbage.
+  CGAL::Euler::remove_face(halfedge(*faces(collected).begin(), collected), collected);
+  expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(collected); }, "not closed");
+  collected.collect_garbage();
+  ASSERT_FALSE(collected.has_garbage());
+  expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(collected); }, "not closed");
 }
 
 // The closedness check sorts most vertices' edges on a sorting network and

@@ -231,7 +231,11 @@ surveyor_volume(const TriangleMesh& tmesh, const CGAL_NP_CLASS& np = parameters:
       f(get(vpm, target(h0, tmesh)), get(vpm, target(h1, tmesh)), get(vpm, target(h2, tmesh)));
     });
   };
-  const FT result = internal::sum_of_signed_tetrahedra(gt, c, for_each_triangle);
+  // A map that returns references (the mesh's own points) lets the sum keep
+  // pointers to the points instead of copying them.
+  constexpr bool points_stay = std::is_lvalue_reference<
+      typename boost::property_traits<std::remove_cv_t<decltype(vpm)>>::reference>::value;
+  const FT result = internal::sum_of_signed_tetrahedra<points_stay>(gt, c, for_each_triangle);
   internal::check_orientation_of_result(result, signed_result);
   // Instantiated only when the parameter is passed: the check needs more of
   // the traits (the requirements of PMP::does_self_intersect) than the volume.

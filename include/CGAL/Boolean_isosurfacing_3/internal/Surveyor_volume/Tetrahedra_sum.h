@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <cstddef>
 #include <limits>
-#include <memory>
 #include <type_traits>
+#include <utility>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -362,7 +362,31 @@ double certified_or_exact_sum(double s, double permanents, std::size_t n, double
   return CGAL::to_double(exact_sum) / 6;
 }
 
-template <typename GeomTraits, typename ForEachTriangle>
+// Whether the traits' accessors return a point's coordinates by reference,
+// and whether those are three doubles side by side (as in Epick's points):
+// the pair kernel can then read them where they are.
+template <typename GeomTraits>
+constexpr bool returns_coordinate_references()
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  return std::is_lvalue_reference<decltype(
+      std::declval<const GeomTraits&>().compute_x_3_object()(std::declval<const Point_3&>()))>::value;
+}
+
+template <typename GeomTraits>
+bool has_adjacent_double_coordinates(const GeomTraits& gt)
+{
+  const auto x = gt.compute_x_3_object();
+  const auto y = gt.compute_y_3_object();
+  const auto z = gt.compute_z_3_object();
+  const typename GeomTraits::Point_3 probe = gt.construct_point_3_object()(0, 0, 0);
+  return &y(probe) == &x(probe) + 1 && &z(probe) == &x(probe) + 2;
+}
+
+// `PointsOutliveTheVisit`: the points that `for_each_triangle` passes stay
+// where they are until the sum is done (references into the mesh, not
+// temporaries), so the traversal may keep pointers to them.
+template <bool PointsOutliveTheVisit = false, typename GeomTraits, typename ForEachTriangle>
 double sum_of_signed_tetrahedra(const GeomTraits& gt,
                                 const Reference_point<typename GeomTraits::Point_3>& c,
                                 const ForEachTriangle& for_each_triangle,
@@ -373,27 +397,61 @@ double sum_of_signed_tetrahedra(const GeomTraits& gt,
   const auto y = gt.compute_y_3_object();
   const auto z = gt.compute_z_3_object();
 
-  // The traversal only copies each triangle's 9 coordinates into a small
-  // buffer (contiguous stores that stay in L1); the pair kernel then runs
-  // over the buffer.
-  constexpr std::size_t batch = 256;
-  std::unique_ptr<double[]> buffer(new double[9 * batch]);
-  double* const b = buffer.get();
-  std::size_t fill = 0;
+  // The traversal only records each triangle's corners in a small buffer
+  // that stays in L1; the pair kernel then runs over the buffer.  Where the
+  // points stay put, it records pointers to them and prefetches them: 3
+  // stores a triangle instead of 9, and the kernel's loads hit the cache
+  // (with the border checks settled by counts, 0.70-0.78x the time of
+  // surveyor_volume on a Surface_mesh).  Otherwise it copies the coordinates.
+  constexpr std::size_t batch = 64;
   Tetrahedra_pair_sum sum(c.x, c.y, c.z);
-  const auto corners = [b](std::size_t i, int k) { return b + 9 * i + 3 * k; };
-  for_each_triangle([&](const Point_3& t1, const Point_3& t2, const Point_3& t3) {
-    double* q = b + 9 * fill;
-    q[0] = x(t1); q[1] = y(t1); q[2] = z(t1);
-    q[3] = x(t2); q[4] = y(t2); q[5] = z(t2);
-    q[6] = x(t3); q[7] = y(t3); q[8] = z(t3);
-    if(++fill == batch)
+  std::size_t fill = 0;
+  constexpr bool may_point = PointsOutliveTheVisit && returns_coordinate_references<GeomTraits>();
+  bool by_pointer = false;
+  if constexpr(may_point)
+    by_pointer = has_adjacent_double_coordinates(gt);
+  if(by_pointer)
+  {
+    if constexpr(may_point)
     {
-      sum.add(batch, corners);
-      fill = 0;
+      const double* pointers[3 * batch];
+      const auto corners = [&pointers](std::size_t i, int k) { return pointers[3 * i + std::size_t(k)]; };
+      for_each_triangle([&](const Point_3& t1, const Point_3& t2, const Point_3& t3) {
+        const double** q = pointers + 3 * fill;
+        q[0] = &x(t1);
+        q[1] = &x(t2);
+        q[2] = &x(t3);
+#if defined(__GNUC__)
+        __builtin_prefetch(q[0]);
+        __builtin_prefetch(q[1]);
+        __builtin_prefetch(q[2]);
+#endif
+        if(++fill == batch)
+        {
+          sum.add(batch, corners);
+          fill = 0;
+        }
+      });
+      sum.add(fill, corners);
     }
-  });
-  sum.add(fill, corners);
+  }
+  else
+  {
+    double coordinates[9 * batch];
+    const auto corners = [&coordinates](std::size_t i, int k) { return coordinates + 9 * i + 3 * k; };
+    for_each_triangle([&](const Point_3& t1, const Point_3& t2, const Point_3& t3) {
+      double* q = coordinates + 9 * fill;
+      q[0] = x(t1); q[1] = y(t1); q[2] = z(t1);
+      q[3] = x(t2); q[4] = y(t2); q[5] = z(t2);
+      q[6] = x(t3); q[7] = y(t3); q[8] = z(t3);
+      if(++fill == batch)
+      {
+        sum.add(batch, corners);
+        fill = 0;
+      }
+    });
+    sum.add(fill, corners);
+  }
   double s, permanents;
   std::size_t n;
   sum.finish(s, permanents, n);
@@ -429,7 +487,7 @@ double sum_of_signed_tetrahedra_of_arrays(const PointArray& points, const Triang
   });
 }
 
-template <typename GeomTraits, typename ForEachTriangle>
+template <bool PointsOutliveTheVisit = false, typename GeomTraits, typename ForEachTriangle>
 typename GeomTraits::FT sum_of_signed_tetrahedra(const GeomTraits& gt,
                                                  const Reference_point<typename GeomTraits::Point_3>& c,
                                                  const ForEachTriangle& for_each_triangle,
@@ -446,13 +504,13 @@ typename GeomTraits::FT sum_of_signed_tetrahedra(const GeomTraits& gt,
   return sum.result();
 }
 
-template <typename GeomTraits, typename ForEachTriangle>
+template <bool PointsOutliveTheVisit = false, typename GeomTraits, typename ForEachTriangle>
 typename GeomTraits::FT sum_of_signed_tetrahedra(const GeomTraits& gt,
                                                  const Reference_point<typename GeomTraits::Point_3>& c,
                                                  const ForEachTriangle& for_each_triangle)
 {
-  return sum_of_signed_tetrahedra(gt, c, for_each_triangle,
-                                  std::is_same<typename GeomTraits::FT, double>());
+  return sum_of_signed_tetrahedra<PointsOutliveTheVisit>(gt, c, for_each_triangle,
+                                                         std::is_same<typename GeomTraits::FT, double>());
 }
 
 } // namespace internal
