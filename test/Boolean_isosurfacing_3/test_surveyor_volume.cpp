@@ -478,6 +478,13 @@ TEST(SurveyorVolumeErrors, ClosednessByCountsHoldsWithAndWithoutGarbage)
   collected.collect_garbage();
   ASSERT_FALSE(collected.has_garbage());
   expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(collected); }, "not closed");
+
+  // Polyhedron_3 is settled by its counts too.
+  CGAL::Polyhedron_3<Epick> polyhedron;
+  CGAL::copy_face_graph(make_sphere(Point(0, 0, 0), 1.0, 2), polyhedron);
+  EXPECT_LT(relative_error(BI::surveyor_volume(polyhedron), with_garbage), 0.1);
+  polyhedron.erase_facet(polyhedron.facets_begin()->halfedge());
+  expect_error<BI::Open_mesh_error>([&] { BI::surveyor_volume(polyhedron); }, "not closed");
 }
 
 // The closedness check sorts most vertices' edges on a sorting network and

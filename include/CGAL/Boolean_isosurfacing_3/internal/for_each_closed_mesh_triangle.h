@@ -6,6 +6,7 @@
 
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
 
+#include <CGAL/Polyhedron_3_fwd.h>
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -21,8 +22,9 @@ namespace internal {
 // Whether the counts alone prove that no halfedge is a border: a halfedge
 // belongs to one face or to none, so when there are exactly three halfedges
 // a face and every face is a triangle (which the traversal still checks),
-// every halfedge is in a face.  Known in constant time for Surface_mesh;
-// other graphs answer false and have their faces' edges checked one by one.
+// every halfedge is in a face.  Known in constant time for Surface_mesh and
+// Polyhedron_3; other graphs answer false and have their faces' edges
+// checked one by one.
 template <typename TriangleMesh>
 bool has_three_halfedges_per_face(const TriangleMesh&)
 {
@@ -33,6 +35,12 @@ template <typename Point>
 bool has_three_halfedges_per_face(const CGAL::Surface_mesh<Point>& mesh)
 {
   return mesh.number_of_halfedges() == 3 * std::size_t(mesh.number_of_faces());
+}
+
+template <typename Traits, typename Items, template <class T, class I, class A> class HDS, typename Alloc>
+bool has_three_halfedges_per_face(const CGAL::Polyhedron_3<Traits, Items, HDS, Alloc>& mesh)
+{
+  return mesh.size_of_halfedges() == 3 * std::size_t(mesh.size_of_facets());
 }
 
 // Calls f(h0, h1, h2) with the three halfedges of every face of `mesh`,
