@@ -405,45 +405,12 @@ double sum_of_signed_tetrahedra(const GeomTraits& gt,
   // surveyor_volume on a Surface_mesh).  Otherwise it copies the coordinates.
   constexpr std::size_t batch = 64;
   Tetrahedra_pair_sum sum(c.x, c.y, c.z);
-  std::size_t fill = 0;
-  constexpr bool may_point = PointsOutliveTheVisit && returns_coordinate_references<GeomTraits>();
-  bool by_pointer = false;
-  if constexpr(may_point)
-    by_pointer = has_adjacent_double_coordinates(gt);
-  if(by_pointer)
-  {
-    if constexpr(may_point)
-    {
-      const double* pointers[3 * batch];
-      const auto corners = [&pointers](std::size_t i, int k) { return pointers[3 * i + std::size_t(k)]; };
-      for_each_triangle([&](const Point_3& t1, const Point_3& t2, const Point_3& t3) {
-        const double** q = pointers + 3 * fill;
-        q[0] = &x(t1);
-        q[1] = &x(t2);
-        q[2] = &x(t3);
-#if defined(__GNUC__)
-        __builtin_prefetch(q[0]);
-        __builtin_prefetch(q[1]);
-        __builtin_prefetch(q[2]);
-#endif
-        if(++fill == batch)
-        {
-          sum.add(batch, corners);
-          fill = 0;
-        }
-      });
-      sum.add(fill, corners);
-    }
-  }
-  else
-  {
-    double coordinates[9 * batch];
-    const auto corners = [&coordinates](std::size_t i, int k) { return coordinates + 9 * i + 3 * k; };
+  // `record(slot, t1, t2, t3)` stores a triangle in the buffer that
+  // `corners` reads; the kernel runs on each full buffer.
+  const auto add_in_batches = [&](const auto& record, const auto& corners) {
+    std::size_t fill = 0;
     for_each_triangle([&](const Point_3& t1, const Point_3& t2, const Point_3& t3) {
-      double* q = coordinates + 9 * fill;
-      q[0] = x(t1); q[1] = y(t1); q[2] = z(t1);
-      q[3] = x(t2); q[4] = y(t2); q[5] = z(t2);
-      q[6] = x(t3); q[7] = y(t3); q[8] = z(t3);
+      record(fill, t1, t2, t3);
       if(++fill == batch)
       {
         sum.add(batch, corners);
@@ -451,6 +418,40 @@ double sum_of_signed_tetrahedra(const GeomTraits& gt,
       }
     });
     sum.add(fill, corners);
+  };
+  bool by_pointer = false;
+  if constexpr(PointsOutliveTheVisit && returns_coordinate_references<GeomTraits>())
+  {
+    by_pointer = has_adjacent_double_coordinates(gt);
+    if(by_pointer)
+    {
+      const double* pointers[3 * batch];
+      add_in_batches(
+          [&](std::size_t slot, const Point_3& t1, const Point_3& t2, const Point_3& t3) {
+            const double** q = pointers + 3 * slot;
+            q[0] = &x(t1);
+            q[1] = &x(t2);
+            q[2] = &x(t3);
+#if defined(__GNUC__)
+            __builtin_prefetch(q[0]);
+            __builtin_prefetch(q[1]);
+            __builtin_prefetch(q[2]);
+#endif
+          },
+          [&pointers](std::size_t i, int k) { return pointers[3 * i + std::size_t(k)]; });
+    }
+  }
+  if(!by_pointer)
+  {
+    double coordinates[9 * batch];
+    add_in_batches(
+        [&](std::size_t slot, const Point_3& t1, const Point_3& t2, const Point_3& t3) {
+          double* q = coordinates + 9 * slot;
+          q[0] = x(t1); q[1] = y(t1); q[2] = z(t1);
+          q[3] = x(t2); q[4] = y(t2); q[5] = z(t2);
+          q[6] = x(t3); q[7] = y(t3); q[8] = z(t3);
+        },
+        [&coordinates](std::size_t i, int k) { return coordinates + 9 * i + 3 * k; });
   }
   double s, permanents;
   std::size_t n;
