@@ -249,8 +249,8 @@ public:
     }
     else
       orient_by_minimum_spanning_forest();
-    build_centre_tree();
-    build_winding_number();
+    // Independent, and each sequential inside: side by side on two threads.
+    internal::concurrent_invoke<ConcurrencyTag>([this] { build_centre_tree(); }, [this] { build_winding_number(); });
   }
 
   Tangent_plane_signed_distance_3(const Tangent_plane_signed_distance_3&) = delete;

@@ -17,6 +17,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #  include <tbb/blocked_range.h>
 #  include <tbb/parallel_for.h>
+#  include <tbb/parallel_invoke.h>
 #endif
 
 #include <algorithm>
@@ -118,6 +119,23 @@ void concurrent_for_blocks(std::size_t n, std::size_t block, const Body& body)
   concurrent_for<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
     body(b * block, (std::min)(n, (b + 1) * block));
   });
+}
+
+/// Calls `first()` and `second()`, two independent tasks: at once under
+/// Parallel_tag (with TBB), one after the other otherwise.
+template <typename ConcurrencyTag, typename First, typename Second>
+void concurrent_invoke(const First& first, const Second& second)
+{
+  check_concurrency_tag<ConcurrencyTag>();
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(is_parallel_tag<ConcurrencyTag>())
+  {
+    tbb::parallel_invoke(first, second);
+    return;
+  }
+#endif
+  first();
+  second();
 }
 
 } // namespace internal

@@ -46,6 +46,10 @@ public:
 
   std::size_t size() const { return m_size; }
 
+  /// The number of slots; it changes when an insertion grows the map, which
+  /// moves every value (the pointers `insert()` returned are then stale).
+  std::size_t capacity() const { return m_slots.size(); }
+
   /// The value of `key`, or null.
   const Value* find(std::uint64_t key) const
   {

@@ -212,39 +212,68 @@ public:
     if constexpr(is_parallel_tag<ConcurrencyTag>())
     {
       std::vector<std::uint64_t> level, keys;
-      std::vector<double> key_values;
+      std::vector<double*> slots, corner_slots;
       level.swap(stack);
       while(!level.empty())
       {
+        // The level's new corners, each once: a placeholder in the cache
+        // marks it taken (no sort, no second lookup), and the evaluation
+        // writes the value into its slot before any visit reads the cache.
+        // If the cache grew meanwhile, its slots moved: look them up again.
+        // The visits below read the corners through `corner_slots`.
         keys.clear();
-        for(const std::uint64_t cube : level)
+        slots.clear();
+        corner_slots.resize(8 * level.size());
+        const std::size_t capacity = value_cache.capacity();
+        for(std::size_t q = 0; q < level.size(); ++q)
         {
-          const std::array<std::int64_t, 3> c = internal::lattice_index(cube);
+          const std::array<std::int64_t, 3> c = internal::lattice_index(level[q]);
           for(int k = 0; k < 8; ++k)
           {
             const std::uint64_t key =
                 internal::lattice_key(c[0] + (k & 1), c[1] + ((k >> 1) & 1), c[2] + ((k >> 2) & 1));
-            if(!value_cache.contains(key))
+            const std::pair<double*, bool> inserted = value_cache.insert(key, 0.);
+            corner_slots[8 * q + std::size_t(k)] = inserted.first;
+            if(inserted.second)
+            {
               keys.push_back(key);
+              slots.push_back(inserted.first);
+            }
           }
         }
-        std::sort(keys.begin(), keys.end());
-        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-        key_values.resize(keys.size());
+        if(value_cache.capacity() != capacity)
+        {
+          for(std::size_t e = 0; e < keys.size(); ++e)
+            slots[e] = value_cache.insert(keys[e], 0.).first;
+          for(std::size_t q = 0; q < level.size(); ++q)
+          {
+            const std::array<std::int64_t, 3> c = internal::lattice_index(level[q]);
+            for(int k = 0; k < 8; ++k)
+              corner_slots[8 * q + std::size_t(k)] =
+                value_cache.insert(internal::lattice_key(c[0] + (k & 1), c[1] + ((k >> 1) & 1), c[2] + ((k >> 2) & 1)), 0.)
+                  .first;
+          }
+        }
         const auto start = std::chrono::steady_clock::now();
         concurrent_for_blocks<ConcurrencyTag>(keys.size(), 64, [&](std::size_t first, std::size_t last) {
           for(std::size_t e = first; e < last; ++e)
           {
             const std::array<std::int64_t, 3> p = internal::lattice_index(keys[e]);
-            key_values[e] = evaluate(p[0], p[1], p[2]);
+            *slots[e] = evaluate(p[0], p[1], p[2]);
           }
         });
         m_field_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        for(std::size_t e = 0; e < keys.size(); ++e)
-          cache_value(keys[e], key_values[e]);
-        // The next level, in `stack`.
-        for(const std::uint64_t cube : level)
-          visit(cube);
+        report.field_evaluations += keys.size();
+        for(const double* v : slots)
+          report.undefined_points += std::isnan(*v) ? 1 : 0;
+        // The next level, in `stack` (visits insert no lattice point: the
+        // slots stay where they are).
+        for(std::size_t q = 0; q < level.size(); ++q)
+        {
+          for(int k = 0; k < 8; ++k)
+            values[k] = *corner_slots[8 * q + std::size_t(k)];
+          visit(level[q], internal::lattice_index(level[q]));
+        }
         level.clear();
         level.swap(stack);
       }
@@ -341,11 +370,30 @@ public:
 
   }
 
-  // The table code and the decider's join mask of crossed cube c (its
-  // values in `values`), counting its ambiguous and joined faces.
-  void cube_configuration(const std::array<std::int64_t, 3>& c, unsigned& code, unsigned& join)
+  // Sorts the crossed cubes by key (the triangulation's order, which does
+  // not depend on the order of the visits), their corner values with them.
+  void sort_surface_cubes()
   {
-    cube_values(c, values); // cached
+    std::vector<std::pair<std::uint64_t, std::size_t>> order(surface_cubes.size());
+    for(std::size_t q = 0; q < surface_cubes.size(); ++q)
+      order[q] = {surface_cubes[q], q};
+    std::sort(order.begin(), order.end());
+    std::vector<std::array<double, 8>> sorted_values(order.size());
+    for(std::size_t q = 0; q < order.size(); ++q)
+    {
+      surface_cubes[q] = order[q].first;
+      sorted_values[q] = surface_values[order[q].second];
+    }
+    surface_values.swap(sorted_values);
+    report.surface_cubes = surface_cubes.size();
+  }
+
+  // The table code and the decider's join mask of the crossed cube q of
+  // `surface_cubes` (its values copied to `values`), counting its ambiguous
+  // and joined faces.
+  void cube_configuration(std::size_t q, unsigned& code, unsigned& join)
+  {
+    values = surface_values[q];
     code = internal::inside_cube_code(values);
     join = internal::asymptotic_decider_mask(values, code);
     const unsigned ambiguous = ambiguous_face_mask(code);
@@ -363,17 +411,16 @@ public:
   template <typename PointOutRange, typename TriangleRange>
   std::size_t triangulate(PointOutRange& out_points, TriangleRange& out_triangles)
   {
-    std::sort(surface_cubes.begin(), surface_cubes.end());
-    report.surface_cubes = surface_cubes.size();
+    sort_surface_cubes();
     const Marching_cubes_table& table = Marching_cubes_table::instance();
     Flat_uint64_map<std::size_t> edge_vertex;
     edge_vertex.reserve(3 * surface_cubes.size());
     std::size_t next_vertex = out_points.size();
-    for(const std::uint64_t key : surface_cubes)
+    for(std::size_t q = 0; q < surface_cubes.size(); ++q)
     {
-      const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+      const std::array<std::int64_t, 3> c = internal::lattice_index(surface_cubes[q]);
       unsigned code, join;
-      cube_configuration(c, code, join);
+      cube_configuration(q, code, join);
       std::array<std::size_t, 12 + Marching_cubes_table::max_number_of_polygons> local;
       local.fill(std::size_t(-1));
       auto edge_point = [&](int e) -> Point_3 {
@@ -438,8 +485,7 @@ public:
                                         const Marching_cubes_csg::Feature_settings& settings)
   {
     namespace MC = Marching_cubes_csg;
-    std::sort(surface_cubes.begin(), surface_cubes.end());
-    report.surface_cubes = surface_cubes.size();
+    sort_surface_cubes();
     const Marching_cubes_table& table = Marching_cubes_table::instance();
     Flat_uint64_map<std::size_t> edge_vertex;
     edge_vertex.reserve(3 * surface_cubes.size());
@@ -448,11 +494,11 @@ public:
     std::vector<std::array<std::size_t, 3>> triangles;
     std::vector<std::size_t> fans;
     MC::Plain_feature_counts plain;
-    for(const std::uint64_t key : surface_cubes)
+    for(std::size_t q = 0; q < surface_cubes.size(); ++q)
     {
-      const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+      const std::array<std::int64_t, 3> c = internal::lattice_index(surface_cubes[q]);
       unsigned code, join;
-      cube_configuration(c, code, join);
+      cube_configuration(q, code, join);
       auto edge_point = [&](int e) -> MC::Vector_3d {
         const std::array<int, 2> ends = cube_edge_corners(e);
         const std::array<int, 3> o0 = cube_corner_offset(ends[0]), o1 = cube_corner_offset(ends[1]);
@@ -699,7 +745,16 @@ private:
 
   Cube_state cube_state(const std::array<std::int64_t, 3>& c, std::array<double, 8>& v)
   {
-    const bool defined = cube_values(c, v);
+    cube_values(c, v);
+    return state_of_values(v);
+  }
+
+  // The state of a cube whose corner values are `v`.
+  Cube_state state_of_values(const std::array<double, 8>& v) const
+  {
+    bool defined = true;
+    for(int k = 0; k < 8; ++k)
+      defined = defined && !std::isnan(v[k]);
     // Signs with undefined corners: only the defined ones can witness a crossing.
     bool has_in = false, has_out = false;
     for(int k = 0; k < 8; ++k)
@@ -756,12 +811,19 @@ private:
   // onto `stack`.
   void visit(std::uint64_t key)
   {
+    const std::array<std::int64_t, 3> c = internal::lattice_index(key);
+    cube_values(c, values);
+    visit(key, c);
+  }
+
+  // As visit(key), with the cube's corner values already in `values`.
+  void visit(std::uint64_t key, const std::array<std::int64_t, 3>& c)
+  {
     ++report.visited_cubes;
     // The traversal's extent is unknown beforehand: report 0 as a chance to cancel.
     if((report.visited_cubes & 0xFFFF) == 0)
       progress.report(0);
-    const std::array<std::int64_t, 3> c = internal::lattice_index(key);
-    const Cube_state state = cube_state(c, values);
+    const Cube_state state = state_of_values(values);
     if(state == Cube_state::undefined_crossed)
       ++report.skipped_cubes; // Hoppe: a cube with an undefined corner is skipped
     else if(state == Cube_state::jump)
@@ -770,6 +832,7 @@ private:
       return;
     const unsigned code = internal::inside_cube_code(values);
     surface_cubes.push_back(key);
+    surface_values.push_back(values);
     for(int f = 0; f < 6; ++f)
     {
       if(!face_is_crossed(code, f))
@@ -803,6 +866,7 @@ private:
   std::vector<std::uint64_t> stack;
   Flat_uint64_map<char> visited; // a set
   std::vector<std::uint64_t> surface_cubes;
+  std::vector<std::array<double, 8>> surface_values; // the corner values of each surface cube
   std::vector<std::array<double, 3>> sample_xyz;
   std::array<double, 8> values;
 };

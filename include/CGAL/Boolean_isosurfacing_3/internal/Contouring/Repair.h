@@ -11,6 +11,7 @@
 #include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Regular_lattice_3.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/Concurrent_for.h>
+#include <CGAL/Boolean_isosurfacing_3/internal/Flat_uint64_map.h>
 #include <CGAL/Boolean_isosurfacing_3/internal/callback_parameter.h>
 #include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
 #include <CGAL/Boolean_isosurfacing_3/exceptions.h>
@@ -256,6 +257,8 @@ struct Vertex_faces
 /// The samples bucketed in a uniform grid of step `h`: whether a point is
 /// within h of a sample, by looking at the 27 cells around it (the membrane
 /// rule asks this of every output vertex; a kd-tree query each costs more).
+/// The cells are found by hashing, the point's own cell first (where a
+/// sample within h nearly always is).
 class Sample_grid
 {
 public:
@@ -273,10 +276,11 @@ public:
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for(const auto& k : keyed)
     {
-      if(m_keys.empty() || m_keys.back() != k.first)
+      if(m_begin.empty() || m_last_key != k.first)
       {
-        m_keys.push_back(k.first);
+        m_cells.insert(k.first, m_begin.size());
         m_begin.push_back(m_points.size());
+        m_last_key = k.first;
       }
       m_points.push_back(k.second);
     }
@@ -290,21 +294,25 @@ public:
     const double x[3] = {CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2])};
     const std::int64_t c[3] = {cell(x[0]), cell(x[1]), cell(x[2])};
     const double h2 = m_h * m_h;
+    auto near_in_cell = [&](std::int64_t dx, std::int64_t dy, std::int64_t dz) {
+      const std::size_t* b = m_cells.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
+      if(b == nullptr)
+        return false;
+      for(std::size_t i = m_begin[*b]; i < m_begin[*b + 1]; ++i)
+      {
+        const double d0 = m_points[i][0] - x[0], d1 = m_points[i][1] - x[1], d2 = m_points[i][2] - x[2];
+        if(d0 * d0 + d1 * d1 + d2 * d2 <= h2)
+          return true;
+      }
+      return false;
+    };
+    if(near_in_cell(0, 0, 0))
+      return true;
     for(std::int64_t dz = -1; dz <= 1; ++dz)
       for(std::int64_t dy = -1; dy <= 1; ++dy)
         for(std::int64_t dx = -1; dx <= 1; ++dx)
-        {
-          const auto found = std::lower_bound(m_keys.begin(), m_keys.end(), key(c[0] + dx, c[1] + dy, c[2] + dz));
-          if(found == m_keys.end() || *found != key(c[0] + dx, c[1] + dy, c[2] + dz))
-            continue;
-          const std::size_t b = std::size_t(found - m_keys.begin());
-          for(std::size_t i = m_begin[b]; i < m_begin[b + 1]; ++i)
-          {
-            const double d0 = m_points[i][0] - x[0], d1 = m_points[i][1] - x[1], d2 = m_points[i][2] - x[2];
-            if(d0 * d0 + d1 * d1 + d2 * d2 <= h2)
-              return true;
-          }
-        }
+          if((dx != 0 || dy != 0 || dz != 0) && near_in_cell(dx, dy, dz))
+            return true;
     return false;
   }
 
@@ -313,13 +321,15 @@ private:
   static std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k)
   {
     // 21 bits per axis, wrapping: distinct cells may share a key, which only
-    // adds samples to look at (the distance test is exact).
+    // adds samples to look at (the distance test is exact).  Never the map's
+    // empty key (bit 63 is clear).
     const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
     return (std::uint64_t(i) & mask) | ((std::uint64_t(j) & mask) << 21) | ((std::uint64_t(k) & mask) << 42);
   }
 
   double m_h;
-  std::vector<std::uint64_t> m_keys;
+  std::uint64_t m_last_key = 0;
+  Flat_uint64_map<std::size_t> m_cells; // cell key -> its index in m_begin
   std::vector<std::size_t> m_begin;
   std::vector<std::array<double, 3>> m_points;
 };
