@@ -18,6 +18,7 @@
 #include "process_start.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/pts.h>
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_point_samples.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/tris.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
@@ -407,6 +408,7 @@ int run(Tool& tool, const Options& options)
     biso_tools::check_output_file(options.output);
   if(options.input == "-" && isatty(0))
     std::cerr << "contour: reading .pts lines (x y z [nx ny nz]) from the terminal; end with Ctrl-D\n";
+  const std::future<void> table = biso_tools::build_meanwhile<BI::Marching_cubes_table>(tool.parallel());
   const biso_tools::Stopwatch watch;
   const Samples samples = read_samples(tool, options);
   const double read_seconds = watch.seconds();

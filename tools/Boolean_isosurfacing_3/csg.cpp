@@ -27,6 +27,7 @@
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_mesh.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_closed_triangle_soup.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Post_processing_statistics.h>
 #include <CGAL/Boolean_isosurfacing_3/generators.h>
 #include <CGAL/Boolean_isosurfacing_3/marching_cubes_csg.h>
@@ -819,6 +820,7 @@ int run(Tool& tool, const Options& options)
   for(const std::string* f : {&options.output, &options.creases_file, &options.corners_file})
     if(!f->empty()) biso_tools::check_output_file(*f);
 
+  const std::future<void> table = biso_tools::build_meanwhile<BI::Marching_cubes_table>(tool.parallel());
   std::vector<Soup> meshes = read_inputs(tool, options.files);
   overlap_warnings(tool, options, meshes);
   const CGAL::Bbox_3 box = lattice_box(requested, meshes);

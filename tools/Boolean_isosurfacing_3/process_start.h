@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <future>
 #include <string>
 
 #if defined(__linux__)
@@ -112,6 +113,19 @@ inline int run_distributed_driver(const char* tool, const char* name, char** arg
   execute_with_huge_page_heap(driver, argv);
   std::fprintf(stderr, "%s: error: --distributed: cannot run %s: %s\n", tool, driver.c_str(), std::strerror(errno));
   return 1;
+}
+
+/// Starts building `Table::instance()` (a table derived once per process,
+/// such as the Marching Cubes table: about 1 ms) on a second thread, if the
+/// run may use two, while the caller reads its input on the first.  The
+/// returned future waits for it when it is destroyed, error or not; a
+/// caller that needs the table first simply waits in `instance()`.
+template <typename Table>
+std::future<void> build_meanwhile(bool parallel)
+{
+  if(!parallel)
+    return std::future<void>();
+  return std::async(std::launch::async, [] { (void)Table::instance(); });
 }
 
 } // namespace biso_tools
