@@ -803,17 +803,38 @@ private:
   {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t n = m_points.size();
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    pairs.reserve(n * (m_k - 1));
+    // The neighbour pairs (i < j), each once, in lexicographic order: each
+    // pair is bucketed under its smaller sample, and only the small buckets
+    // are sorted (one sort of all n (k - 1) pairs took most of this stage).
+    std::vector<std::size_t> bucket_begin(n + 1, 0);
     for(std::size_t i = 0; i < n; ++i)
       for(std::size_t j = 1; j < m_k; ++j)
-      {
-        const std::size_t other = neighbors(i)[j];
-        if(other != i)
-          pairs.emplace_back(std::min(i, other), std::max(i, other));
-      }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+        if(neighbors(i)[j] != i)
+          ++bucket_begin[(std::min)(i, neighbors(i)[j]) + 1];
+    for(std::size_t i = 0; i < n; ++i)
+      bucket_begin[i + 1] += bucket_begin[i];
+    std::vector<std::size_t> larger(bucket_begin[n]);
+    {
+      std::vector<std::size_t> fill(bucket_begin.begin(), bucket_begin.end() - 1);
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = 1; j < m_k; ++j)
+        {
+          const std::size_t other = neighbors(i)[j];
+          if(other != i)
+            larger[fill[(std::min)(i, other)]++] = (std::max)(i, other);
+        }
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    pairs.reserve(larger.size());
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const auto first = larger.begin() + std::ptrdiff_t(bucket_begin[i]);
+      const auto last = larger.begin() + std::ptrdiff_t(bucket_begin[i + 1]);
+      std::sort(first, last);
+      for(auto it = first; it != last; ++it)
+        if(it == first || *it != *(it - 1))
+          pairs.emplace_back(i, *it);
+    }
     // Weight 1 - |n_i . n_j| (Hoppe), plus min(|n_i . e|, |n_j . e|) for the
     // unit edge direction e: across a wall thinner than a neighbourhood (the
     // sockets of distcap.pts) the k-NN graph joins the two sides, whose planes
@@ -824,9 +845,9 @@ private:
     // on distcap: chi -252 -> -15 with the default parameters, and 717 -> 664
     // neighbour pairs with n_i . n_j < -0.9 (the rest are the two sides of the
     // walls, correctly opposite).
-    std::vector<double> weights(pairs.size());
-    for(std::size_t e = 0; e < pairs.size(); ++e)
-    {
+    // (weight, edge index): sorted as pairs, the order by increasing (weight, index).
+    std::vector<std::pair<double, std::size_t>> by_weight(pairs.size());
+    internal::concurrent_for<ConcurrencyTag>(pairs.size(), [&](std::size_t e) {
       const Vector_3& ni = m_normals[pairs[e].first];
       const Vector_3& nj = m_normals[pairs[e].second];
       double w = 1.0 - std::abs(CGAL::to_double(ni * nj));
@@ -834,17 +855,13 @@ private:
       const double length = std::sqrt(CGAL::to_double(d * d));
       if(length > 0)
         w += (std::min)(std::abs(CGAL::to_double(ni * d)), std::abs(CGAL::to_double(nj * d))) / length;
-      weights[e] = w;
-    }
+      by_weight[e] = {w, e};
+    });
     // Kruskal: the edges by increasing (weight, index), joined by union-find.
     // (Boost's kruskal_minimum_spanning_tree keeps its edges in a binary heap
-    // compared through property maps: 22 % of a noisy 60K-sample run.)
-    std::vector<std::size_t> by_weight(pairs.size());
-    for(std::size_t e = 0; e < by_weight.size(); ++e)
-      by_weight[e] = e;
-    std::sort(by_weight.begin(), by_weight.end(), [&weights](std::size_t a, std::size_t b) {
-      return weights[a] < weights[b] || (weights[a] == weights[b] && a < b);
-    });
+    // compared through property maps: 22 % of a noisy 60K-sample run.)  The
+    // order is total, so a parallel sort gives the sequential one.
+    internal::concurrent_sort<ConcurrencyTag>(by_weight.begin(), by_weight.end());
     std::vector<std::size_t> parent(n);
     for(std::size_t i = 0; i < n; ++i)
       parent[i] = i;
@@ -855,8 +872,9 @@ private:
     };
     std::vector<std::pair<std::size_t, std::size_t>> tree_edges;
     tree_edges.reserve(n);
-    for(const std::size_t e : by_weight)
+    for(const auto& weighted : by_weight)
     {
+      const std::size_t e = weighted.second;
       const std::size_t a = find(pairs[e].first), b = find(pairs[e].second);
       if(a == b)
         continue;

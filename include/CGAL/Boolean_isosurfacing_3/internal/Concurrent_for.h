@@ -18,6 +18,7 @@
 #  include <tbb/blocked_range.h>
 #  include <tbb/parallel_for.h>
 #  include <tbb/parallel_invoke.h>
+#  include <tbb/parallel_sort.h>
 #endif
 
 #include <algorithm>
@@ -119,6 +120,23 @@ void concurrent_for_blocks(std::size_t n, std::size_t block, const Body& body)
   concurrent_for<ConcurrencyTag>((n + block - 1) / block, [&](std::size_t b) {
     body(b * block, (std::min)(n, (b + 1) * block));
   });
+}
+
+/// Sorts [first, last) by `<`, with TBB's parallel sort under Parallel_tag.
+/// Equal elements may end up in either order: give a total order (an index
+/// as the last key) where the result must not depend on the schedule.
+template <typename ConcurrencyTag, typename RandomAccessIterator>
+void concurrent_sort(RandomAccessIterator first, RandomAccessIterator last)
+{
+  check_concurrency_tag<ConcurrencyTag>();
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr(is_parallel_tag<ConcurrencyTag>())
+  {
+    tbb::parallel_sort(first, last);
+    return;
+  }
+#endif
+  std::sort(first, last);
 }
 
 /// Calls `first()` and `second()`, two independent tasks: at once under

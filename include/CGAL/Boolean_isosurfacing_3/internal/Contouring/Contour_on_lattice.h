@@ -971,7 +971,7 @@ Contouring_statistics contour_on_lattice(const Contouring_lattice& lattice, cons
       throw Invalid_input_error("maximum_hole_size must be >= 0");
     if(consistent && out_triangles.size() > first_triangle)
     {
-      report.removed_membranes = internal::remove_unwitnessed_membranes(
+      report.removed_membranes = internal::remove_unwitnessed_membranes<ConcurrencyTag>(
         out_points, out_triangles, first_vertex, first_triangle, field.points(),
         [&field](const auto& p) { return double(field.distance_to_samples(p)); }, reach, max_hole / 2);
       next_vertex = out_points.size();

@@ -345,8 +345,11 @@ private:
 /// whose remaining faces form several fans (two cut regions touching at a
 /// vertex), all fans but the largest are removed, until each vertex has one
 /// fan: the cut leaves an oriented 2-manifold whose border loops are simple.
-/// Returns the number of removed membranes.
-template <typename PointOutRange, typename TriangleRange, typename SampleRange, typename Distance>
+/// Returns the number of removed membranes.  The vertices' distances are
+/// measured in parallel under Parallel_tag (`distance_to_samples` must then
+/// be safe to call concurrently); the rest, and the result, are sequential.
+template <typename ConcurrencyTag, typename PointOutRange, typename TriangleRange, typename SampleRange,
+          typename Distance>
 std::size_t remove_unwitnessed_membranes(PointOutRange& points, TriangleRange& triangles, std::size_t first_vertex,
                                          std::size_t first_triangle, const SampleRange& samples,
                                          const Distance& distance_to_samples, double witness_distance, double max_gap)
@@ -358,15 +361,15 @@ std::size_t remove_unwitnessed_membranes(PointOutRange& points, TriangleRange& t
   const Sample_grid grid(samples, witness_distance);
   std::vector<double> distance(nv, 0);
   std::vector<char> far(nv, 0);
-  bool any = false;
-  for(std::size_t v = 0; v < nv; ++v)
-  {
-    far[v] = !grid.near(points[first_vertex + v]);
-    if(far[v])
-      distance[v] = distance_to_samples(points[first_vertex + v]);
-    any = any || far[v];
-  }
-  if(!any)
+  concurrent_for_blocks<ConcurrencyTag>(nv, 1024, [&](std::size_t begin, std::size_t end) {
+    for(std::size_t v = begin; v < end; ++v)
+    {
+      far[v] = !grid.near(points[first_vertex + v]);
+      if(far[v])
+        distance[v] = distance_to_samples(points[first_vertex + v]);
+    }
+  });
+  if(std::find(far.begin(), far.end(), char(1)) == far.end())
     return 0;
   std::vector<char> removed(nt, 0);
   std::vector<char> unwitnessed(nt, 0);
