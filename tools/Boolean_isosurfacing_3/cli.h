@@ -26,11 +26,13 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #  include <tbb/global_control.h>
+#  include <tbb/parallel_for.h>
 #endif
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <functional>
 #include <iostream>
 #include <new>
@@ -163,6 +165,36 @@ public:
 
   bool parallel() const { return !m_sequential && m_threads != 1; }
   bool sequential() const { return !parallel(); }
+
+  /// Calls `body(i)` for each i in [0, n): on TBB's threads if the run is
+  /// parallel, else in order.  Independent tasks (one input file each).  An
+  /// exception is rethrown for the smallest i that threw, as a sequential
+  /// loop that stops at the first failure would report it.
+  template <typename Body>
+  void for_each_index(std::size_t n, const Body& body) const
+  {
+    std::vector<std::exception_ptr> errors(n);
+    auto run_one = [&](std::size_t i) {
+      try
+      {
+        body(i);
+      }
+      catch(...)
+      {
+        errors[i] = std::current_exception();
+      }
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel() && n > 1)
+      tbb::parallel_for(std::size_t(0), n, run_one);
+    else
+#endif
+      for(std::size_t i = 0; i < n && (i == 0 || !errors[i - 1]); ++i)
+        run_one(i);
+    for(const std::exception_ptr& e : errors)
+      if(e)
+        std::rethrow_exception(e);
+  }
   bool json() const { return m_json; }
   bool quiet() const { return m_quiet; }
 

@@ -599,24 +599,29 @@ std::string variable_name(std::size_t i)
 }
 
 // Reads every input into flat arrays (checked closed and consistently
-// oriented); an inward-oriented one is accepted with a note.
+// oriented); an inward-oriented one is accepted with a note.  The files are
+// read side by side on a parallel run; the first bad one (in order) is the
+// error, as in a sequential run.
 std::vector<Soup> read_inputs(Tool& tool, const std::vector<std::string>& files)
 {
   const biso_tools::Stopwatch watch;
   std::vector<Soup> meshes(files.size());
-  std::size_t triangles = 0;
-  for(std::size_t i = 0; i < files.size(); ++i)
-  {
+  std::vector<double> signed_volumes(files.size(), 0);
+  tool.for_each_index(files.size(), [&](std::size_t i) {
     biso_tools::check_input_file(files[i]);
-    double signed_volume = 0;
     try
     {
-      meshes[i] = BI::IO::read_closed_triangle_soup(files[i], /* allow_inward = */ true, &signed_volume);
+      meshes[i] = BI::IO::read_closed_triangle_soup(files[i], /* allow_inward = */ true, &signed_volumes[i]);
     }
     catch(const BI::Invalid_input_error& e)
     {
       throw biso_tools::File_error(files[i] + ": " + e.what());
     }
+  });
+  std::size_t triangles = 0;
+  for(std::size_t i = 0; i < files.size(); ++i)
+  {
+    const double signed_volume = signed_volumes[i];
     triangles += meshes[i].triangles.size();
     tool.input(files[i]);
     if(meshes[i].triangulated_polygons > 0)
