@@ -599,6 +599,27 @@ TEST_F(CsgTool, TooManyCellsIsRefusedWithTheEstimateAndTheLimit)
   EXPECT_NE(m.err.find("GiB, more than the limit of 0.5 GiB (--max-memory)"), std::string::npos) << m.err;
 }
 
+// The inputs are read side by side on a parallel run; when several are bad
+// the error is still the first bad one in order, as in a sequential run.
+TEST_F(CsgTool, TheFirstBadInputInOrderIsTheError)
+{
+  const std::string a = write("a.off", box_off(0, 0, 0, 2));
+  const std::string open = write("open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n");
+  const std::string missing = m_dir + "/missing.off";
+  for(const char* threads : {"", "--sequential "})
+  {
+    Result r = run(std::string(threads) + open + " " + missing + " " + a + " --expr \"A | B | C\" --cells 10");
+    EXPECT_EQ(r.status, 1) << threads;
+    EXPECT_TRUE(is_one_clean_line(r.err)) << r.err;
+    EXPECT_NE(r.err.find("open.off"), std::string::npos) << threads << r.err;
+    EXPECT_NE(r.err.find("not closed"), std::string::npos) << threads << r.err;
+    r = run(std::string(threads) + a + " " + missing + " " + open + " --expr \"A | B | C\" --cells 10");
+    EXPECT_EQ(r.status, 1) << threads;
+    EXPECT_TRUE(is_one_clean_line(r.err)) << r.err;
+    EXPECT_NE(r.err.find("missing.off: cannot open"), std::string::npos) << threads << r.err;
+  }
+}
+
 TEST_F(CsgTool, FileProblemsAreNamedBeforeComputing)
 {
   const std::string a = write("a.off", box_off(0, 0, 0, 2)), two = a + " " + a + " --op union --cells 10 ";
