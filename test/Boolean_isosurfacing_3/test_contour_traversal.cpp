@@ -443,3 +443,35 @@ TEST(Sharp_features, Box_samples_with_normals_keep_the_edges)
   EXPECT_LT(sharp.edge_median, 0.75 * plain.edge_median);
   EXPECT_LT(plain.edge_median, 0.75 * hoppe.edge_median);
 }
+
+// The membrane rule's grid answers "is a sample within h" exactly as a brute
+// force does, near the cell borders, at distance h itself, and with cell
+// keys that wrap (coordinates 2^21 cells apart share a key).
+TEST(Repair, Sample_grid_is_near_exactly_where_a_sample_is_within_h)
+{
+  CGAL::Random random(7);
+  const double h = 0.25;
+  std::vector<Point_3> samples;
+  for(int i = 0; i < 300; ++i)
+    samples.emplace_back(random.get_double(-2, 2), random.get_double(-2, 2), random.get_double(-2, 2));
+  samples.emplace_back(0.5, 0.5, 0.5);                           // on cell corners
+  samples.emplace_back(h * double(1 << 21) + 0.1, 0.1, 0.1);    // same key as a cell near the origin
+  const BI::internal::Sample_grid grid(samples, h);
+  std::vector<Point_3> queries;
+  for(int i = 0; i < 3000; ++i)
+    queries.emplace_back(random.get_double(-2.5, 2.5), random.get_double(-2.5, 2.5), random.get_double(-2.5, 2.5));
+  queries.emplace_back(0.5 + h, 0.5, 0.5); // exactly h away
+  queries.emplace_back(0.5, 0.5 - h, 0.5);
+  queries.emplace_back(0.1, 0.1, 0.1);     // in the cell whose key the far sample shares
+  std::size_t near = 0;
+  for(const Point_3& q : queries)
+  {
+    bool brute = false;
+    for(const Point_3& s : samples)
+      brute = brute || CGAL::squared_distance(q, s) <= h * h;
+    EXPECT_EQ(grid.near(q), brute) << q;
+    near += brute ? 1 : 0;
+  }
+  EXPECT_GT(near, 100u);                 // both answers occur often
+  EXPECT_LT(near, queries.size() - 100);
+}

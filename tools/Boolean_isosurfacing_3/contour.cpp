@@ -18,10 +18,10 @@
 #include "process_start.h"
 
 #include <CGAL/Boolean_isosurfacing_3/IO/pts.h>
-#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/read_point_samples.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/tris.h>
 #include <CGAL/Boolean_isosurfacing_3/IO/write_triangle_soup.h>
+#include <CGAL/Boolean_isosurfacing_3/Marching_cubes_table.h>
 #include <CGAL/Boolean_isosurfacing_3/Tangent_plane_signed_distance_3.h>
 #include <CGAL/Boolean_isosurfacing_3/contour_point_set.h>
 
